@@ -1,0 +1,40 @@
+//! coulomb-hands: tracked hands move virtual objects only through Coulomb
+//! friction contact forces, on top of rapier3d.
+//!
+//! The data path is the module layout:
+//! [`hand`] (tracked skeletal poses) → [`contact`] (contact points, skin
+//! patches, slipping surface points) → [`friction`] (the pure contact law,
+//! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps rapier).
+//!
+//! ```
+//! use coulomb_hands::{InteractionConfig, InteractionWorld, ObjectDesc, Side, StaticDesc};
+//! use glam::{Quat, Vec3};
+//!
+//! let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+//! world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+//! let cube = world
+//!     .add_object(&ObjectDesc::cuboid("cube", Vec3::splat(0.05), 0.05, Vec3::new(0.0, 0.025, 0.0)))
+//!     .unwrap();
+//! let hand = world.add_hand(Side::Right);
+//! let rig = coulomb_hands::hand::rig::HandRig::adult(Side::Right);
+//! let pose = rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [0.0; 5]);
+//! world.set_hand_pose(hand, &pose).unwrap();
+//! world.step();
+//! assert!(world.contacts().is_empty()); // the hand is 30 cm above the cube
+//! assert!(world.object_state(cube).unwrap().position.y > 0.0);
+//! ```
+
+pub mod contact;
+pub mod friction;
+pub mod hand;
+pub mod material;
+pub mod object;
+pub mod pipeline;
+pub mod scenes;
+
+pub use contact::{Contact, ContactEvent, ContactEventKind};
+pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};
+pub use hand::{Bone, Capsule, Finger, HandPose, Palm, Phalanx, PoseError, Side};
+pub use material::Material;
+pub use object::{GammaMode, ObjectDesc, ObjectError, ObjectId, ShapeDesc, StaticDesc};
+pub use pipeline::{ConfigError, HandId, InteractionConfig, InteractionWorld, ObjectState, WorldError};

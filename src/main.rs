@@ -1,0 +1,112 @@
+//! `coulomb-hands`: the headless command line.
+
+use clap::{Parser, Subcommand};
+use coulomb_hands::scenes::{GraspLiftCarry, held_boxes_scene};
+use coulomb_hands::{InteractionConfig, KineticFriction};
+use std::process::ExitCode;
+use std::time::Instant;
+
+#[derive(Parser)]
+#[command(version, about = "Hands that move virtual objects only through Coulomb friction contact forces")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Scripted grasp, lift, carry and release of a cube (the default).
+    Demo {
+        /// Print one JSON object instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Use Eq. 3.8 as written instead of Coulomb's kinetic friction.
+        #[arg(long)]
+        thesis_kinetic: bool,
+        /// Seconds between printed rows.
+        #[arg(long, default_value_t = 0.25)]
+        every: f32,
+    },
+    /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
+    Bench {
+        /// Steps to time after warm-up.
+        #[arg(long, default_value_t = 2000)]
+        steps: usize,
+        /// Held boxes (2 bones in contact each), 1..=16.
+        #[arg(long, default_value_t = 16)]
+        boxes: usize,
+        /// Leave the tower out.
+        #[arg(long)]
+        no_tower: bool,
+    },
+}
+
+fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
+    let config = InteractionConfig {
+        kinetic: if thesis_kinetic { KineticFriction::Thesis } else { KineticFriction::Coulomb },
+        ..InteractionConfig::default()
+    };
+    let scene = GraspLiftCarry::new(config).map_err(|e| e.to_string())?;
+    let report = scene.run(every).map_err(|e| e.to_string())?;
+    if json {
+        println!("{}", serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?);
+        return Ok(());
+    }
+    println!("grasp-lift-carry: a 5 cm, 50 g wooden cube; thumb + 4 fingers; lift 20 cm; turn 90°; open");
+    println!("{:>5} {:<8} {:>22} {:>22} {:>7} {:>4} {:>4} {:>4} {:>7} {:>5} {:>5}",
+        "t[s]", "phase", "palm [m]", "cube [m]", "v[m/s]", "stat", "dyn", "sep", "F[N]", "begin", "end");
+    for r in &report.timeline {
+        let v = |a: [f32; 3]| format!("({:6.3},{:6.3},{:6.3})", a[0], a[1], a[2]);
+        println!("{:5.2} {:<8} {:>22} {:>22} {:7.3} {:4} {:4} {:4} {:7.3} {:5} {:5}",
+            r.t, r.phase, v(r.palm), v(r.cube), r.cube_speed, r.contacts_static,
+            r.contacts_dynamic, r.contacts_separated, r.hand_force, r.began, r.ended);
+    }
+    println!();
+    println!("cube drift in the hand while carried: {:.1} mm, {:.1}°", report.max_drift * 1e3, report.max_drift_deg);
+    println!("held at {:.3} m with {} contacts; after opening: {:.3} m, {} contacts",
+        report.held_height, report.contacts_held, report.final_height, report.contacts_after_release);
+    println!("max cube speed {:.2} m/s", report.max_speed);
+    let held = report.held_height > 0.15;
+    let dropped = report.final_height < report.held_height - 0.1;
+    println!("outcome: {} and {}", if held { "held through lift and turn" } else { "NOT held" },
+        if dropped { "fell when the hand opened" } else { "did NOT fall" });
+    if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
+}
+
+fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
+    let (mut world, _) = held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
+    for _ in 0..100 {
+        world.step();
+    }
+    let (mut hands_ns, mut total_ns) = (0u128, 0u128);
+    for _ in 0..steps {
+        let t0 = Instant::now();
+        world.apply_hand_forces();
+        let t1 = Instant::now();
+        world.step_physics();
+        let t2 = Instant::now();
+        hands_ns += (t1 - t0).as_nanos();
+        total_ns += (t2 - t0).as_nanos();
+    }
+    let n = steps.max(1) as f64;
+    let bones = world.contacts().iter().filter(|c| c.normal_force > 0.0).count();
+    println!("scene: 2 hands, {boxes} held boxes, tower: {tower}; {bones} bones pressing, {} objects", world.object_count());
+    println!("interaction layer (contacts + forces): {:8.2} µs/step", hands_ns as f64 / n / 1e3);
+    println!("full step (with rapier):               {:8.2} µs/step", total_ns as f64 / n / 1e3);
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
+        Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
+        Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,231 @@
+//! Descriptions of the virtual objects hands can touch, and of static scenery.
+
+use crate::material::Material;
+use glam::{Quat, Vec3};
+use rapier3d::geometry::SharedShape;
+use rapier3d::math::Pose;
+
+/// Handle of an interactive object in an [`crate::InteractionWorld`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+pub struct ObjectId(pub u32);
+
+impl std::fmt::Display for ObjectId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "object {}", self.0)
+    }
+}
+
+/// A collision shape, in the object's local frame (metres).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ShapeDesc {
+    /// A box with the given half extents.
+    Box { half_extents: Vec3 },
+    Sphere { radius: f32 },
+    /// A capsule along local y.
+    Capsule { half_height: f32, radius: f32 },
+    /// A cylinder along local y.
+    Cylinder { half_height: f32, radius: f32 },
+    /// Several convex parts rigidly joined, e.g. an axe's handle and head.
+    Compound(Vec<Part>),
+}
+
+/// One part of a compound shape.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Part {
+    pub position: Vec3,
+    pub rotation: Quat,
+    pub shape: ShapeDesc,
+}
+
+/// How an object's contact stiffness γ (N/m) is chosen (§3.5.6).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum GammaMode {
+    /// The same γ for every object; the thesis uses 400 N/m.
+    Fixed(f32),
+    /// Eq. 3.11 per object: `γ = m g / (μ_st · 0.2 · d)`.
+    Auto,
+}
+
+impl Default for GammaMode {
+    fn default() -> Self {
+        GammaMode::Fixed(400.0)
+    }
+}
+
+/// Everything needed to add a dynamic object.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ObjectDesc {
+    /// A name for messages and outputs.
+    pub name: String,
+    pub shape: ShapeDesc,
+    /// Mass in kg.
+    pub mass: f32,
+    pub material: Material,
+    /// World position of the body origin (m).
+    pub position: Vec3,
+    pub rotation: Quat,
+    /// Overrides the world's γ mode for this object.
+    pub gamma: Option<GammaMode>,
+}
+
+impl ObjectDesc {
+    /// A wooden box of the given full size (m) and mass (kg).
+    pub fn cuboid(name: &str, size: Vec3, mass: f32, position: Vec3) -> ObjectDesc {
+        ObjectDesc {
+            name: name.to_string(),
+            shape: ShapeDesc::Box { half_extents: size * 0.5 },
+            mass,
+            material: Material::wood(),
+            position,
+            rotation: Quat::IDENTITY,
+            gamma: None,
+        }
+    }
+
+    /// The same object with another material.
+    pub fn with_material(mut self, material: Material) -> ObjectDesc {
+        self.material = material;
+        self
+    }
+
+    /// The same object with its own γ mode.
+    pub fn with_gamma(mut self, gamma: GammaMode) -> ObjectDesc {
+        self.gamma = Some(gamma);
+        self
+    }
+}
+
+/// Why an object or scenery description was rejected.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("object '{object}': {field}: {reason}")]
+pub struct ObjectError {
+    pub object: String,
+    pub field: String,
+    pub reason: String,
+}
+
+impl ObjectError {
+    pub(crate) fn new(object: &str, field: impl Into<String>, reason: impl Into<String>) -> Self {
+        ObjectError { object: object.to_string(), field: field.into(), reason: reason.into() }
+    }
+}
+
+fn positive(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(ObjectError::new(object, field, format!("must be a positive finite number, got {v}")))
+    }
+}
+
+fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
+    if v.is_finite() && v.abs().max_element() <= crate::hand::MAX_COORDINATE {
+        Ok(())
+    } else {
+        Err(ObjectError::new(object, field, format!("must be finite and within ±{} m, got {v:?}", crate::hand::MAX_COORDINATE)))
+    }
+}
+
+fn unit_quat(object: &str, field: &str, q: Quat) -> Result<(), ObjectError> {
+    if q.is_finite() && (q.length() - 1.0).abs() <= 1.0e-3 {
+        Ok(())
+    } else {
+        Err(ObjectError::new(object, field, format!("must be a unit quaternion, got {q:?}")))
+    }
+}
+
+impl ShapeDesc {
+    /// Checks sizes and builds rapier's shape.
+    pub(crate) fn build(&self, object: &str, field: &str) -> Result<SharedShape, ObjectError> {
+        Ok(match self {
+            ShapeDesc::Box { half_extents: h } => {
+                finite_vec(object, field, *h)?;
+                for (axis, v) in ["x", "y", "z"].iter().zip(h.to_array()) {
+                    positive(object, &format!("{field}.half_extents.{axis}"), v)?;
+                }
+                SharedShape::cuboid(h.x, h.y, h.z)
+            }
+            ShapeDesc::Sphere { radius } => {
+                positive(object, &format!("{field}.radius"), *radius)?;
+                SharedShape::ball(*radius)
+            }
+            ShapeDesc::Capsule { half_height, radius } => {
+                positive(object, &format!("{field}.half_height"), *half_height)?;
+                positive(object, &format!("{field}.radius"), *radius)?;
+                SharedShape::capsule_y(*half_height, *radius)
+            }
+            ShapeDesc::Cylinder { half_height, radius } => {
+                positive(object, &format!("{field}.half_height"), *half_height)?;
+                positive(object, &format!("{field}.radius"), *radius)?;
+                SharedShape::cylinder(*half_height, *radius)
+            }
+            ShapeDesc::Compound(parts) => {
+                if parts.is_empty() {
+                    return Err(ObjectError::new(object, field, "a compound needs at least one part"));
+                }
+                let mut built = Vec::with_capacity(parts.len());
+                for (i, part) in parts.iter().enumerate() {
+                    let f = format!("{field}.parts[{i}]");
+                    if matches!(part.shape, ShapeDesc::Compound(_)) {
+                        return Err(ObjectError::new(object, &f, "compounds cannot be nested"));
+                    }
+                    finite_vec(object, &format!("{f}.position"), part.position)?;
+                    unit_quat(object, &format!("{f}.rotation"), part.rotation)?;
+                    let shape = part.shape.build(object, &format!("{f}.shape"))?;
+                    built.push((Pose::from_parts(part.position, part.rotation), shape));
+                }
+                SharedShape::compound(built)
+            }
+        })
+    }
+}
+
+impl ObjectDesc {
+    pub(crate) fn validate(&self) -> Result<SharedShape, ObjectError> {
+        let name = self.name.as_str();
+        positive(name, "mass", self.mass)?;
+        finite_vec(name, "position", self.position)?;
+        unit_quat(name, "rotation", self.rotation)?;
+        if let Err(field) = self.material.validate() {
+            return Err(ObjectError::new(name, format!("material.{field}"), "must be finite and ≥ 0"));
+        }
+        if let Some(GammaMode::Fixed(g)) = self.gamma {
+            positive(name, "gamma", g)?;
+        }
+        self.shape.build(name, "shape")
+    }
+}
+
+/// Static scenery: collides with objects through rapier, never with hands.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StaticDesc {
+    pub name: String,
+    pub shape: ShapeDesc,
+    pub position: Vec3,
+    pub rotation: Quat,
+    /// Object–object friction coefficient for rapier.
+    pub friction: f32,
+}
+
+impl StaticDesc {
+    /// A large flat ground slab whose top face is at height `y` (m).
+    pub fn ground(y: f32, friction: f32) -> StaticDesc {
+        StaticDesc {
+            name: "ground".to_string(),
+            shape: ShapeDesc::Box { half_extents: Vec3::new(5.0, 0.5, 5.0) },
+            position: Vec3::new(0.0, y - 0.5, 0.0),
+            rotation: Quat::IDENTITY,
+            friction,
+        }
+    }
+
+    pub(crate) fn validate(&self) -> Result<SharedShape, ObjectError> {
+        let name = self.name.as_str();
+        finite_vec(name, "position", self.position)?;
+        unit_quat(name, "rotation", self.rotation)?;
+        if !(self.friction.is_finite() && self.friction >= 0.0) {
+            return Err(ObjectError::new(name, "friction", format!("must be finite and ≥ 0, got {}", self.friction)));
+        }
+        self.shape.build(name, "shape")
+    }
+}

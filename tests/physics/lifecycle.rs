@@ -1,0 +1,78 @@
+//! When contacts begin and end, and what they do in between.
+
+use super::*;
+use coulomb_hands::{ContactEventKind, Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx, StaticDesc};
+
+const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
+
+/// The index distal bone lowered onto / raised from the top of a box: its
+/// lowest surface point at height `gap(t)` above the box top (y = 0.05).
+fn finger_above(gap: f32) -> HandPose {
+    let mut pose = parked_hand(Side::Right);
+    let y = 0.05 + 0.008 + gap;
+    set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(0.0, y, -0.01), b: Vec3::new(0.0, y, 0.01), radius: 0.008 });
+    pose
+}
+
+#[test]
+fn a_contact_begins_within_the_offset_pushes_only_when_pressing_and_ends_beyond_release() {
+    let config = InteractionConfig::default();
+    let mut world = InteractionWorld::new(config).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    let hand = world.add_hand(Side::Right);
+    // Down from 2 cm above to 2 mm inside over 1 s, hold, back up to 2 cm.
+    let gap = |t: f32| {
+        if t < 1.0 { 0.02 - 0.022 * t } else if t < 1.5 { -0.002 } else { -0.002 + 0.022 * (t - 1.5) }
+    };
+    // The real gap: the box settles a little into the ground.
+    let real_gap = |w: &InteractionWorld, t: f32| {
+        let top = w.object_state(id).unwrap().position.y + 0.025;
+        0.05 + gap(t) - top
+    };
+    let mut began_at = None;
+    let mut ended_at = None;
+    let mut pushed_while_hovering = false;
+    let mut pressed = false;
+    run(&mut world, hand, 2.6, |t| finger_above(gap(t)), |w, t| {
+        let g = real_gap(w, t - config.dt);
+        for e in w.events() {
+            assert_eq!((e.hand, e.bone, e.object), (hand, INDEX_DISTAL, id));
+            match e.kind {
+                ContactEventKind::Began => began_at = began_at.or(Some(g)),
+                ContactEventKind::Ended => ended_at = ended_at.or(Some(g)),
+            }
+        }
+        for c in w.contacts() {
+            if g > 0.0005 && c.force.length() > 0.0 {
+                pushed_while_hovering = true;
+            }
+            if g < -0.001 && c.state == FrictionState::Static && c.normal_force > 0.5 {
+                pressed = true;
+            }
+        }
+    });
+    let began = began_at.expect("a contact began");
+    let ended = ended_at.expect("the contact ended");
+    assert!(began <= config.contact_offset && began > config.contact_offset - 0.001, "began at gap {began}");
+    assert!(ended > config.release_offset && ended < config.release_offset + 0.001, "ended at gap {ended}");
+    assert!(!pushed_while_hovering, "a hovering bone must not push");
+    assert!(pressed, "pressing 2 mm in pushes with ≈ γ·2 mm = 0.8 N and sticks");
+}
+
+#[test]
+fn losing_tracking_releases_the_hands_contacts() {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    let hand = world.add_hand(Side::Right);
+    run(&mut world, hand, 0.2, |_| finger_above(-0.002), |_, _| {});
+    assert_eq!(world.contacts().len(), 1);
+    world.clear_hand_pose(hand).unwrap();
+    world.step();
+    assert!(world.contacts().is_empty());
+    assert_eq!(world.events().len(), 1);
+    assert_eq!(world.events()[0].kind, ContactEventKind::Ended);
+    // The box is pushed by nothing now: it rests on the ground.
+    assert!(world.object_state(coulomb_hands::ObjectId(0)).unwrap().hand_force.length() == 0.0);
+}

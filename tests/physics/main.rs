@@ -1,0 +1,63 @@
+//! Physical-outcome tests of the core: every test asserts what happens to
+//! objects (held, slipped, slid, tipped, launched), never timings.
+
+mod grasp;
+mod lifecycle;
+mod pinch;
+mod push;
+mod safety;
+mod tilt;
+
+use coulomb_hands::hand::rig::HandRig;
+use coulomb_hands::{Bone, Capsule, HandId, HandPose, InteractionWorld, Material, ObjectId, Side};
+use glam::{Quat, Vec3};
+
+/// A hand with every bone parked far from everything (3 m up, spread
+/// apart), so a test can place just the bones it needs.
+pub fn parked_hand(side: Side) -> HandPose {
+    let x = if side == Side::Left { -1.0 } else { 1.0 };
+    let mut pose = HandRig::adult(side).pose(Vec3::new(x, 3.0, 0.0), Quat::IDENTITY, [0.0; 5]);
+    for finger in pose.fingers.iter_mut() {
+        for bone in finger.iter_mut() {
+            bone.a.y += 0.5;
+            bone.b.y += 0.5;
+        }
+    }
+    pose
+}
+
+/// Puts one capsule bone into a pose.
+pub fn set_bone(pose: &mut HandPose, bone: Bone, capsule: Capsule) {
+    if let Bone::Finger(f, p) = bone {
+        pose.fingers[f as usize][p as usize] = capsule;
+    }
+}
+
+/// A material with round test coefficients (μ_st 0.5, μ_dyn 0.4).
+pub fn test_material(surface_friction: f32) -> Material {
+    Material::custom("test", 0.5, 0.4, surface_friction)
+}
+
+/// Steps the world `seconds` long, setting `pose(t)` on `hand` each step,
+/// and calls `each(world, t)` after each step.
+pub fn run(
+    world: &mut InteractionWorld,
+    hand: HandId,
+    seconds: f32,
+    mut pose: impl FnMut(f32) -> HandPose,
+    mut each: impl FnMut(&InteractionWorld, f32),
+) {
+    let dt = world.config().dt;
+    let steps = (seconds / dt).round() as usize;
+    let t0 = world.time() as f32;
+    for i in 0..steps {
+        let t = t0 + i as f32 * dt;
+        world.set_hand_pose(hand, &pose(t)).expect("valid pose");
+        world.step();
+        each(world, t + dt);
+    }
+}
+
+pub fn position(world: &InteractionWorld, id: ObjectId) -> Vec3 {
+    world.object_state(id).expect("object exists").position
+}

@@ -1,0 +1,163 @@
+//! Pinch hold threshold: Coulomb's law decides whether a squeezed box holds.
+
+use super::*;
+use coulomb_hands::contact::patch::PatchConfig;
+use coulomb_hands::{Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx};
+
+const HALF: f32 = 0.02; // 4 cm box
+const MASS: f32 = 0.05;
+const RADIUS: f32 = 0.008;
+const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
+
+struct Pinch {
+    world: InteractionWorld,
+    box_id: ObjectId,
+    hands: [HandId; 2],
+    poses: [HandPose; 2],
+}
+
+/// A box in mid-air squeezed by the index distal bones of two hands, one
+/// on each x face, each sunk `depth` into the box; nothing else touches it.
+fn pinch(config: InteractionConfig, depth: f32) -> Pinch {
+    let mut world = InteractionWorld::new(config).unwrap();
+    let desc = ObjectDesc::cuboid("box", Vec3::splat(2.0 * HALF), MASS, Vec3::new(0.0, 0.5, 0.0))
+        .with_material(test_material(0.5));
+    let box_id = world.add_object(&desc).unwrap();
+    let mut poses = [parked_hand(Side::Left), parked_hand(Side::Right)];
+    let mut hands = [HandId(0); 2];
+    for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+        let s = if i == 0 { -1.0 } else { 1.0 };
+        let x = s * (HALF + RADIUS - depth);
+        let capsule = Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
+        set_bone(&mut poses[i], INDEX_DISTAL, capsule);
+        hands[i] = world.add_hand(side);
+    }
+    Pinch { world, box_id, hands, poses }
+}
+
+impl Pinch {
+    /// Holds both hands still for `seconds`; returns the box's largest
+    /// drop below its start (m).
+    fn hold(&mut self, seconds: f32) -> f32 {
+        self.hold_after(0.0, seconds)
+    }
+
+    /// Holds both hands still; returns the box's largest drop during the
+    /// `seconds` that follow the first `settle` seconds (m).
+    fn hold_after(&mut self, settle: f32, seconds: f32) -> f32 {
+        let dt = self.world.config().dt;
+        let settle_steps = (settle / dt).round() as usize;
+        let mut start = position(&self.world, self.box_id).y;
+        let mut drop = 0.0f32;
+        for i in 0..((settle + seconds) / dt).round() as usize {
+            if i == settle_steps {
+                start = position(&self.world, self.box_id).y;
+            }
+            for (hand, pose) in self.hands.iter().zip(&self.poses) {
+                self.world.set_hand_pose(*hand, pose).unwrap();
+            }
+            self.world.step();
+            if i >= settle_steps {
+                drop = drop.max(start - position(&self.world, self.box_id).y);
+            }
+        }
+        drop
+    }
+}
+
+/// The squeeze depth at which `k` times the weight is the friction limit:
+/// 2 μ_st γ δ = k m g.
+fn depth_for(k: f32, gamma: f32) -> f32 {
+    k * MASS * 9.81 / (2.0 * 0.5 * gamma)
+}
+
+#[test]
+fn holds_with_a_25_percent_margin_over_coulombs_threshold() {
+    let mut p = pinch(InteractionConfig::default(), depth_for(1.25, 400.0));
+    let drop = p.hold(2.0);
+    // Measured from the release, so the elastic sag m g / 2γ ≈ 0.6 mm counts too.
+    assert!(drop < 0.002, "box drifted {:.2} mm in 2 s", drop * 1e3);
+    // The hold really was at the intended normal force (no hidden margin).
+    let contacts = p.world.contacts();
+    assert_eq!(contacts.len(), 2, "{contacts:?}");
+    for c in contacts {
+        assert_eq!(c.state, FrictionState::Static);
+        assert_eq!(c.stiffness, 400.0, "the stability limit must not soften this pinch");
+        let expected = 1.25 * MASS * 9.81 / (2.0 * 0.5);
+        assert!((c.normal_force - expected).abs() / expected < 0.05, "f_n {} vs {expected}", c.normal_force);
+    }
+}
+
+#[test]
+fn slips_when_the_squeeze_is_25_percent_below_the_threshold() {
+    let mut p = pinch(InteractionConfig::default(), depth_for(0.75, 400.0));
+    let drop = p.hold(2.0);
+    assert!(drop > 0.01, "box only dropped {:.2} mm", drop * 1e3);
+}
+
+#[test]
+fn the_threshold_is_coulombs_for_another_stiffness_too() {
+    // Auto-γ gives this box a different stiffness; the force threshold must not move.
+    let config = InteractionConfig { gamma: coulomb_hands::GammaMode::Auto, ..InteractionConfig::default() };
+    let gamma = pinch(config, 0.0).world.object_gamma(ObjectId(0)).unwrap();
+    assert!((gamma - 400.0).abs() > 50.0, "auto γ {gamma} should differ from 400");
+    // This softer γ sags m g / 2γ ≈ 3.5 mm before it holds: let that settle
+    // for 0.5 s, then the hold must not creep.
+    let held = pinch(config, depth_for(1.25, gamma)).hold_after(0.5, 2.0);
+    assert!(held < 0.002, "held box crept {:.2} mm", held * 1e3);
+    let slipped = pinch(config, depth_for(0.75, gamma)).hold_after(0.5, 2.0);
+    assert!(slipped > 0.01, "box only dropped {:.2} mm", slipped * 1e3);
+}
+
+#[test]
+fn one_or_nine_samples_give_the_same_total_force() {
+    let total = |samples: usize| {
+        let config = InteractionConfig {
+            patch: PatchConfig { samples, ..PatchConfig::default() },
+            ..InteractionConfig::default()
+        };
+        let mut p = pinch(config, depth_for(1.25, 400.0));
+        p.hold(0.5);
+        p.world.object_state(p.box_id).unwrap().hand_force
+    };
+    let (one, nine) = (total(1), total(9));
+    assert!(one.length() > 0.3, "the hands hold the weight: {one:?}");
+    assert!((one - nine).length() < 0.01 * one.length(), "1 sample {one:?} vs 9 samples {nine:?}");
+}
+
+#[test]
+fn nine_samples_resist_twisting_that_one_sample_does_not() {
+    // No gravity: only an external twist about the pinch axis (x).
+    let twist = |samples: usize| {
+        let config = InteractionConfig {
+            gravity: Vec3::ZERO,
+            patch: PatchConfig { samples, ..PatchConfig::default() },
+            ..InteractionConfig::default()
+        };
+        let mut p = pinch(config, 0.003);
+        let body = p.world.object_body(p.box_id).unwrap();
+        let dt = p.world.config().dt;
+        // The turned angle, accumulated so full turns count.
+        let mut turned = 0.0f32;
+        for _ in 0..(0.5 / dt) as usize {
+            for (hand, pose) in p.hands.iter().zip(&p.poses) {
+                p.world.set_hand_pose(*hand, pose).unwrap();
+            }
+            p.world.apply_hand_forces();
+            p.world.physics_mut().bodies[body].add_torque(Vec3::new(0.002, 0.0, 0.0), true);
+            p.world.step_physics();
+            turned += p.world.object_state(p.box_id).unwrap().angvel.x * dt;
+        }
+        turned.to_degrees()
+    };
+    let (one, nine) = (twist(1), twist(9));
+    // The patch's twist stiffness: 8 ring samples of γ/9 at the finger
+    // patch radius, on each of the two contacts. The torque is below the
+    // patches' torsional friction (2 · μ_st · f_n · ρ · 8/9 ≈ 0.0043 N·m),
+    // so the box settles at the elastic angle τ/k.
+    let rho = PatchConfig::default().finger_radius;
+    let stiffness = 2.0 * 8.0 * (400.0 / 9.0) * rho * rho;
+    let elastic = (0.002 / stiffness).to_degrees();
+    assert!((nine - elastic).abs() < 0.25 * elastic, "9 samples: turned {nine:.1}°, elastic angle {elastic:.1}°");
+    assert!(one > 45.0, "1 sample: turned only {one:.1}°");
+}

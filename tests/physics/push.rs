@@ -1,0 +1,73 @@
+//! Push: a fingertip pushes a box along the ground. Slippery ground: it
+//! slides; grippy ground with a push above the centre: it tips over
+//! (thesis Ch. 4, the sculpture path).
+
+use super::*;
+use coulomb_hands::{Finger, InteractionConfig, ObjectDesc, Palm, StaticDesc};
+
+const HALF: f32 = 0.025;
+
+struct Outcome {
+    /// Box displacement along the push (m).
+    travel: f32,
+    /// Box rotation from upright (degrees).
+    tilt: f32,
+    /// Bones other than the index finger that touched the box.
+    other_bones: usize,
+}
+
+/// A pointing right hand (index straight, other fingers curled) moves its
+/// index tip along +x at 0.1 m/s for 1.2 s at height `tip_height`, into a
+/// 5 cm, 100 g box, then lifts 5 cm straight up and waits. Ground and box share the
+/// object–object friction `ground_mu`.
+fn push(tip_height: f32, ground_mu: f32) -> Outcome {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, ground_mu)).unwrap();
+    let start = Vec3::new(0.2, HALF, 0.0);
+    let desc = ObjectDesc::cuboid("box", Vec3::splat(2.0 * HALF), 0.1, start)
+        .with_material(Material { surface_friction: ground_mu, ..Material::wood() });
+    let id = world.add_object(&desc).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let rig = HandRig::adult(Side::Right);
+    let palm = Palm::from_normal_direction(Vec3::ZERO, -Vec3::Y, Vec3::X, rig.palm_half_extents).unwrap();
+    let pointing = rig.pose(Vec3::ZERO, palm.rotation, [1.0, 0.0, 1.0, 1.0, 1.0]);
+    // Shift the hand so the index tip starts 2 cm before the box's face.
+    let index = pointing.fingers[Finger::Index as usize][2];
+    let tip = index.b + (index.b - index.a).normalize() * index.radius;
+    let offset = Vec3::new(start.x - HALF - 0.02, tip_height, 0.0) - tip;
+    let mut other_bones = 0;
+    run(
+        &mut world,
+        hand,
+        2.5,
+        |t| {
+            let advance = Vec3::X * 0.1 * t.min(1.2);
+            let lift = Vec3::Y * 0.1 * (t - 1.2).clamp(0.0, 0.5);
+            pointing.transformed(Vec3::ZERO, Quat::IDENTITY, offset + advance + lift)
+        },
+        |w, _| {
+            other_bones += w.contacts().iter().filter(|c| !matches!(c.bone, Bone::Finger(Finger::Index, _))).count();
+        },
+    );
+    let state = world.object_state(id).unwrap();
+    Outcome {
+        travel: state.position.x - start.x,
+        tilt: state.rotation.angle_between(Quat::IDENTITY).to_degrees(),
+        other_bones,
+    }
+}
+
+#[test]
+fn on_slippery_ground_the_box_slides() {
+    let o = push(HALF, 0.05);
+    assert_eq!(o.other_bones, 0, "only the index finger may touch the box");
+    assert!(o.travel > 0.08, "slid only {:.1} cm", o.travel * 100.0);
+    assert!(o.tilt < 10.0, "tilted {:.1}°", o.tilt);
+}
+
+#[test]
+fn on_grippy_ground_a_high_push_tips_it_over() {
+    let o = push(0.045, 1.0);
+    assert_eq!(o.other_bones, 0, "only the index finger may touch the box");
+    assert!(o.tilt > 60.0, "tilted only {:.1}°", o.tilt);
+}

@@ -1,0 +1,195 @@
+//! Stability beyond the thesis: glitches do not launch objects, contacts do
+//! not ring, bad input never reaches the physics.
+
+use super::*;
+use coulomb_hands::friction::force_cap;
+use coulomb_hands::{
+    Finger, InteractionConfig, KineticFriction, ObjectDesc, Palm, Phalanx, PoseError, StaticDesc, WorldError,
+};
+
+const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
+
+const GLITCH_BOX: f32 = 0.08;
+
+/// An 8 cm, 50 g box on the ground; the index distal bone appears across
+/// it with its axis 3 cm inside the −x face (its nearest face), and stays
+/// there for 1 s. Returns the box's top speed and the largest single
+/// contact force.
+fn deep_glitch(config: InteractionConfig) -> (f32, f32) {
+    let mut world = InteractionWorld::new(config).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let h = GLITCH_BOX / 2.0;
+    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(GLITCH_BOX), 0.05, Vec3::new(0.0, h, 0.0))).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let mut pose = parked_hand(Side::Right);
+    let x = -h + 0.03;
+    set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(x, h, -0.06), b: Vec3::new(x, h, 0.06), radius: 0.008 });
+    let (mut speed, mut force) = (0.0f32, 0.0f32);
+    run(&mut world, hand, 1.0, |_| pose.clone(), |w, _| {
+        speed = speed.max(w.object_state(id).unwrap().linvel.length());
+        force = w.contacts().iter().map(|c| c.force.length()).fold(force, f32::max);
+    });
+    (speed, force)
+}
+
+#[test]
+fn a_bone_appearing_deep_inside_does_not_launch_the_object() {
+    let (speed, _) = deep_glitch(InteractionConfig::default());
+    assert!(speed < 2.0, "launched at {speed:.2} m/s");
+}
+
+#[test]
+fn without_the_safeguards_the_same_glitch_launches_it() {
+    // The thesis's pure spring releases ½γx² = ½·400·0.038² ≈ 0.29 J
+    // into a 50 g box: about 3.4 m/s.
+    let (speed, _) = deep_glitch(InteractionConfig::thesis());
+    assert!(speed > 2.0, "expected a launch, got {speed:.2} m/s");
+}
+
+#[test]
+fn the_force_cap_bounds_a_deep_contact() {
+    let config = InteractionConfig { max_penetration_speed: None, ..InteractionConfig::default() };
+    let (_, force) = deep_glitch(config);
+    let diameter = GLITCH_BOX * 3f32.sqrt();
+    let cap = force_cap(400.0, diameter);
+    // Normal ≤ cap and friction ≤ μ_st·cap (wood 0.46).
+    assert!(force <= cap * (1.0 + 0.46f32.powi(2)).sqrt() * 1.001, "{force} N > cap {cap} N");
+    let uncapped = InteractionConfig { force_cap: false, max_penetration_speed: None, ..InteractionConfig::default() };
+    let (_, raw) = deep_glitch(uncapped);
+    assert!(raw > 1.2 * cap, "without the cap the glitch pushes {raw} N, above the cap {cap} N");
+}
+
+/// A box dropped onto a flat palm from just touching it; returns the RMS
+/// vertical speed over t ∈ [1, 2] s.
+fn palm_ringing(config: InteractionConfig) -> f32 {
+    let mut world = InteractionWorld::new(config).unwrap();
+    let id = world
+        .add_object(&ObjectDesc::cuboid("box", Vec3::new(0.06, 0.02, 0.06), 0.06, Vec3::new(0.0, 0.32, 0.0)))
+        .unwrap();
+    let hand = world.add_hand(Side::Right);
+    let mut pose = parked_hand(Side::Right);
+    pose.palm = Palm { center: Vec3::new(0.0, 0.3, 0.0), rotation: Quat::IDENTITY, half_extents: Vec3::new(0.045, 0.01, 0.05) };
+    let (mut sum, mut n) = (0.0f32, 0);
+    run(&mut world, hand, 2.0, |_| pose.clone(), |w, t| {
+        if t >= 1.0 {
+            sum += w.object_state(id).unwrap().linvel.y.powi(2);
+            n += 1;
+        }
+    });
+    (sum / n as f32).sqrt()
+}
+
+#[test]
+fn damping_stops_the_contact_spring_from_ringing() {
+    let pure = palm_ringing(InteractionConfig { damping_ratio: None, ..InteractionConfig::default() });
+    let damped = palm_ringing(InteractionConfig::default());
+    assert!(pure > 0.02, "a pure spring should keep oscillating: RMS {pure} m/s");
+    assert!(damped < 0.001, "damped contact still rings: RMS {damped} m/s");
+}
+
+/// A fingertip presses on top of a box on near-frictionless ground and
+/// then sweeps sideways fast; returns the largest friction-to-normal ratio
+/// the box received.
+fn drag_ratio(kinetic: KineticFriction) -> f32 {
+    let config = InteractionConfig { kinetic, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.0)).unwrap();
+    let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))
+        .with_material(Material::custom("test", 0.5, 0.4, 0.0));
+    world.add_object(&desc).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let base = parked_hand(Side::Right);
+    let r = 0.008;
+    let mut ratio = 0.0f32;
+    run(&mut world, hand, 0.6, |t| {
+        // Press 3 mm into the top face, then sweep +x at 1 m/s.
+        let x = (t - 0.3).max(0.0) * 1.0;
+        let y = 0.05 + r - 0.003;
+        let mut pose = base.clone();
+        set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(x, y, -0.01), b: Vec3::new(x, y, 0.01), radius: r });
+        pose
+    }, |w, _| {
+        for c in w.contacts() {
+            if c.normal_force > 0.1 {
+                let tangential = (c.force + c.normal_force * c.normal).length();
+                ratio = ratio.max(tangential / c.normal_force);
+            }
+        }
+    });
+    ratio
+}
+
+#[test]
+fn coulomb_kinetic_friction_is_bounded_by_mu_but_eq_3_8_is_not() {
+    let coulomb = drag_ratio(KineticFriction::Coulomb);
+    let thesis = drag_ratio(KineticFriction::Thesis);
+    assert!(coulomb <= 0.5 * 1.001, "Coulomb: ratio {coulomb} exceeds μ_st");
+    assert!(thesis > 0.6, "Eq. 3.8 as written should exceed the cone on a fast sweep: {thesis}");
+}
+
+#[test]
+fn bad_poses_are_rejected_naming_hand_and_bone_and_leave_the_world_untouched() {
+    let build = || {
+        let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+        world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+        let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.05, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+        let hand = world.add_hand(Side::Left);
+        let mut pose = parked_hand(Side::Left);
+        set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(-0.03, 0.05 + 0.006, 0.0), b: Vec3::new(0.03, 0.056, 0.0), radius: 0.008 });
+        (world, id, hand, pose)
+    };
+    let (mut clean, clean_id, clean_hand, pose) = build();
+    let (mut world, id, hand, _) = build();
+
+    let mut nan = pose.clone();
+    nan.fingers[Finger::Middle as usize][1].b.x = f32::NAN;
+    let err = world.set_hand_pose(hand, &nan).unwrap_err();
+    assert!(matches!(err, WorldError::Pose(PoseError::NonFinite { hand: 0, bone: Bone::Finger(Finger::Middle, Phalanx::Intermediate), .. })), "{err}");
+    assert!(err.to_string().contains("hand 0") && err.to_string().contains("middle-intermediate"), "{err}");
+
+    let mut zero = pose.clone();
+    zero.fingers[Finger::Ring as usize][2].b = zero.fingers[Finger::Ring as usize][2].a;
+    let err = world.set_hand_pose(hand, &zero).unwrap_err();
+    assert!(matches!(err, WorldError::Pose(PoseError::ZeroLength { bone: Bone::Finger(Finger::Ring, Phalanx::Distal), .. })), "{err}");
+
+    let mut negative = pose.clone();
+    negative.fingers[Finger::Thumb as usize][0].radius = -0.01;
+    let err = world.set_hand_pose(hand, &negative).unwrap_err();
+    assert!(err.to_string().contains("thumb-proximal") && err.to_string().contains("radius"), "{err}");
+
+    let mut absurd = pose.clone();
+    absurd.palm.center.y = 1.0e9;
+    assert!(matches!(world.set_hand_pose(hand, &absurd), Err(WorldError::Pose(PoseError::OutOfRange { bone: Bone::Palm, .. }))));
+
+    assert!(world.hand_pose(hand).is_none(), "a rejected pose must not be stored");
+    // The world behaves exactly like one that never saw the bad poses.
+    for _ in 0..500 {
+        world.set_hand_pose(hand, &pose).unwrap();
+        clean.set_hand_pose(clean_hand, &pose).unwrap();
+        world.step();
+        clean.step();
+    }
+    assert_eq!(position(&world, id).to_array().map(f32::to_bits), position(&clean, clean_id).to_array().map(f32::to_bits));
+    assert!(!world.contacts().is_empty(), "the finger rests on the box");
+}
+
+#[test]
+fn bad_objects_are_rejected_before_anything_is_added() {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    let good = ObjectDesc::cuboid("crate", Vec3::splat(0.05), 0.05, Vec3::ZERO);
+    let cases = [
+        (ObjectDesc { mass: -1.0, ..good.clone() }, "mass"),
+        (ObjectDesc { mass: f32::NAN, ..good.clone() }, "mass"),
+        (ObjectDesc::cuboid("crate", Vec3::new(0.05, 0.0, 0.05), 0.05, Vec3::ZERO), "half_extents.y"),
+        (ObjectDesc { position: Vec3::new(f32::INFINITY, 0.0, 0.0), ..good.clone() }, "position"),
+        (good.clone().with_material(Material::custom("bad", f32::NAN, 0.4, 0.5)), "static_mu"),
+    ];
+    for (desc, field) in cases {
+        let err = world.add_object(&desc).unwrap_err().to_string();
+        assert!(err.contains("crate") && err.contains(field), "{err} should name '{field}'");
+    }
+    assert_eq!(world.object_count(), 0);
+    assert_eq!(world.physics().bodies.len(), 0);
+    assert!(InteractionWorld::new(InteractionConfig { dt: 0.0, ..InteractionConfig::default() }).is_err());
+    assert!(InteractionWorld::new(InteractionConfig { release_offset: 0.001, ..InteractionConfig::default() }).is_err());
+}
