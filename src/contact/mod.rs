@@ -264,15 +264,22 @@ impl Contact {
 
     /// Evaluates the contact law for this step and updates the anchors.
     /// Writes the sample forces into `out` (cleared first).
+    ///
+    /// `proximity` is the bone–object closest-feature query, or `None` if
+    /// the caller skipped it; `query` runs it (returning `None` beyond the
+    /// release offset). A contact that stays static never needs it: its bone
+    /// point is pressed in below C, inside the friction cone. Returns
+    /// `false` when the contact has ended.
     pub(crate) fn update(
         &mut self,
-        prox: &Proximity,
+        proximity: Option<Proximity>,
+        query: &mut dyn FnMut() -> Option<Proximity>,
         motion: &BoneMotion,
         object: &ObjectView,
         settings: &LawSettings,
-        out: &mut Vec<(Vec3, Vec3)>,
-    ) {
-        out.clear();
+        scratch: &mut Scratch,
+    ) -> bool {
+        scratch.forces.clear();
         let pose = &object.pose;
         let a = &mut self.anchor;
         let n = (pose.rotation * a.n_local).normalize_or_zero();
@@ -320,14 +327,18 @@ impl Contact {
             FrictionState::Separated => {
                 // Not pressing: no force, and the contact re-anchors at the
                 // current closest features so the next press starts fresh.
-                *a = Anchor::new(prox, self.bone, motion, object, &settings.patch);
+                let Some(prox) = proximity.or_else(query) else { return false };
+                *a = Anchor::new(&prox, self.bone, motion, object, &settings.patch);
                 self.point = prox.object_point;
                 self.normal = prox.object_normal;
                 self.samples.clear();
                 self.force = Vec3::ZERO;
-                return;
+                return true;
             }
             FrictionState::Dynamic => {
+                if proximity.or_else(query).is_none() {
+                    return false;
+                }
                 // Slipping: skin and surface slide over each other, so both
                 // anchors move. The site re-centres under the bone (the
                 // overlap follows whichever of bone and face is smaller),
@@ -368,43 +379,54 @@ impl Contact {
         // share of the friction cone (torsional slip), mean removed.
         let c_now = pose.transform_point(a.c_local);
         let n_now = (pose.rotation * a.n_local).normalize_or_zero();
-        let rot = bone_rotation(a.bone, motion.now, &motion.palm_now);
-        let rot_prev = bone_rotation(a.bone, motion.prev, &motion.palm_prev);
+        // Rotations as matrices: each is applied to every sample.
+        let object_rot = glam::Mat3::from_quat(pose.rotation);
+        let rot = glam::Mat3::from_quat(bone_rotation(a.bone, motion.now, &motion.palm_now));
+        let rot_rate = (rot - glam::Mat3::from_quat(bone_rotation(a.bone, motion.prev, &motion.palm_prev)))
+            * (1.0 / settings.dt);
         // Damping of the deviations, folded in as extra stretch c/γ · ė.
         let lag = if gamma > 0.0 { object.damping / gamma } else { 0.0 };
         let fn_mag = self.normal_force;
         let static_limit = object.mu.static_mu * fn_mag / gamma;
         let kinetic_limit = object.mu.dynamic_mu * fn_mag / gamma;
         let normal_limit = fn_mag / gamma;
-        let mut deviations = Vec::with_capacity(a.samples.len());
+        let deviations = &mut scratch.deviations;
+        deviations.clear();
+        self.samples.clear();
         for (ci_local, skin) in a.samples.iter_mut() {
-            let ci = pose.transform_point(*ci_local);
+            let mut ci = pose.translation + object_rot * *ci_local;
             let rest = c_now + rot * *skin;
             let e = ci - rest;
             let e_n = e.dot(n_now).clamp(-normal_limit, normal_limit);
             let mut e_t = e - e.dot(n_now) * n_now;
-            if e_t.length() > static_limit {
+            if e_t.length_squared() > static_limit * static_limit {
                 // This sample slips: it keeps the kinetic stretch and its
                 // object point moves along the surface.
                 e_t = e_t.normalize_or_zero() * kinetic_limit;
-                let moved = surface::project_to_surface(object.shape, pose, rest + e_t + e_n * n_now);
-                *ci_local = pose.inverse_transform_point(moved);
+                ci = surface::project_to_surface(object.shape, pose, rest + e_t + e_n * n_now);
+                *ci_local = pose.inverse_transform_point(ci);
             }
-            let skin_velocity = (rot * *skin - rot_prev * *skin) / settings.dt;
-            let e_rate = object.angvel.cross(ci - c_now) - skin_velocity;
+            let e_rate = object.angvel.cross(ci - c_now) - rot_rate * *skin;
             deviations.push(e_t + e_n * n_now + lag * e_rate);
+            self.samples.push(ci);
         }
-        let mut forces = Vec::with_capacity(deviations.len());
-        patch::sample_forces(self.force, &deviations, gamma, &mut forces);
+        let mut forces = std::mem::take(&mut scratch.sample_forces);
+        patch::sample_forces(self.force, deviations, gamma, &mut forces);
         self.point = c_now;
         self.normal = n_now;
-        self.samples.clear();
-        for ((ci_local, _), fi) in a.samples.iter().zip(forces) {
-            let ci = pose.transform_point(*ci_local);
-            self.samples.push(ci);
-            out.push((fi, ci));
-        }
+        scratch.forces.extend(forces.iter().copied().zip(self.samples.iter().copied()));
+        scratch.sample_forces = forces;
+        true
     }
+}
+
+/// Buffers reused from step to step, so updating a contact allocates nothing.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    deviations: Vec<Vec3>,
+    sample_forces: Vec<Vec3>,
+    /// `(force on the object, world point)` per sample of the last update.
+    pub forces: Vec<(Vec3, Vec3)>,
 }
 
 /// Contact begin/end notifications, for visuals and sound.

@@ -11,10 +11,10 @@
 //! * Same calls, same results: all iteration is in a fixed order.
 
 use crate::contact::{
-    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Proximity,
+    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Proximity, Scratch,
     patch::PatchConfig,
 };
-use crate::friction::{self, KineticFriction};
+use crate::friction::{self, FrictionState, KineticFriction};
 use crate::hand::{Bone, BoneShape, HandPose, PoseError, Side, BONES_PER_HAND};
 use crate::material::Material;
 use crate::object::{GammaMode, ObjectDesc, ObjectError, ObjectId, StaticDesc};
@@ -131,11 +131,10 @@ impl InteractionConfig {
         if !(self.release_offset.is_finite() && self.release_offset >= self.contact_offset) {
             return err("release_offset", format!("must be ≥ contact_offset, got {}", self.release_offset));
         }
-        if let GammaMode::Fixed(g) = self.gamma {
-            if !pos(g) {
+        if let GammaMode::Fixed(g) = self.gamma
+            && !pos(g) {
                 return err("gamma", format!("must be positive, got {g}"));
             }
-        }
         if self.patch.samples == 0 || self.patch.samples > 64 {
             return err("patch.samples", format!("must be in 1..=64, got {}", self.patch.samples));
         }
@@ -148,16 +147,14 @@ impl InteractionConfig {
                 return err(field, format!("must be finite and ≥ 0, got {v}"));
             }
         }
-        if let Some(z) = self.damping_ratio {
-            if !(z.is_finite() && z >= 0.0) {
+        if let Some(z) = self.damping_ratio
+            && !(z.is_finite() && z >= 0.0) {
                 return err("damping_ratio", format!("must be finite and ≥ 0, got {z}"));
             }
-        }
-        if let Some(v) = self.max_penetration_speed {
-            if !pos(v) {
+        if let Some(v) = self.max_penetration_speed
+            && !pos(v) {
                 return err("max_penetration_speed", format!("must be positive, got {v}"));
             }
-        }
         if !pos(self.probe_offset) {
             return err("probe_offset", format!("must be positive, got {}", self.probe_offset));
         }
@@ -225,7 +222,7 @@ pub struct InteractionWorld {
     contacts: Vec<Contact>,
     events: Vec<ContactEvent>,
     time: f64,
-    scratch: Vec<(Vec3, Vec3)>,
+    scratch: Scratch,
 }
 
 fn contact_key(c: &Contact) -> (HandId, usize, ObjectId) {
@@ -284,7 +281,7 @@ impl InteractionWorld {
             contacts: Vec::new(),
             events: Vec::new(),
             time: 0.0,
-            scratch: Vec::new(),
+            scratch: Scratch::default(),
         })
     }
 
@@ -489,7 +486,7 @@ impl InteractionWorld {
     /// Both sums are kept ≤ 1; a light object in a many-finger grasp gets a
     /// proportionally softer γ (it then needs deeper fingers for the same
     /// force: the friction threshold, a force ratio, is unchanged).
-    fn stability_limits(&self, contacts: &[(Contact, Proximity, BoneMotion)]) -> Vec<StabilityScale> {
+    fn stability_limits(&self, contacts: &[(Contact, Option<Proximity>, BoneMotion)]) -> Vec<StabilityScale> {
         let dt = self.config.dt;
         let mut sums = vec![(0.0f32, 0.0f32); self.objects.len()];
         for (contact, _, _) in contacts {
@@ -567,17 +564,23 @@ impl InteractionWorld {
         let settings = self.settings();
         let no_limit = StabilityScale { stiffness: 1.0, damping: 1.0 };
 
-        // 1. Existing contacts: keep those still within the release offset.
-        let mut live: Vec<(Contact, Proximity, BoneMotion)> = Vec::with_capacity(self.contacts.len());
+        // 1. Existing contacts. A contact that was static last step needs no
+        //    distance query (see `Contact::update`); the others must still be
+        //    within the release offset.
+        let release = self.config.release_offset;
+        let mut live: Vec<(Contact, Option<Proximity>, BoneMotion)> = Vec::with_capacity(self.contacts.len());
         for contact in std::mem::take(&mut self.contacts) {
-            let prox = self.motion(contact.hand, contact.bone).and_then(|motion| {
-                let view = self.object_view(contact.object.0 as usize, no_limit);
-                proximity(&motion.now, &view.pose, view.shape, self.config.release_offset)
-                    .filter(|p| p.distance <= self.config.release_offset)
-                    .map(|p| (p, motion))
-            });
-            match prox {
-                Some((prox, motion)) => live.push((contact, prox, motion)),
+            let Some(motion) = self.motion(contact.hand, contact.bone) else {
+                self.push_event(ContactEventKind::Ended, &contact);
+                continue;
+            };
+            if contact.state == FrictionState::Static {
+                live.push((contact, None, motion));
+                continue;
+            }
+            let view = self.object_view(contact.object.0 as usize, no_limit);
+            match proximity(&motion.now, &view.pose, view.shape, release).filter(|p| p.distance <= release) {
+                Some(prox) => live.push((contact, Some(prox), motion)),
                 None => self.push_event(ContactEventKind::Ended, &contact),
             }
         }
@@ -589,15 +592,26 @@ impl InteractionWorld {
             .iter()
             .map(|o| self.physics.colliders[o.collider].compute_aabb())
             .collect();
+        let mut near_hand = Vec::with_capacity(object_boxes.len());
+        let mut bone_reach = Vec::with_capacity(BONES_PER_HAND);
         for h in 0..self.hands.len() {
             let hand = HandId(h as u32);
+            // Bones' reach, then the objects near the whole hand: most
+            // objects of a scene are far from any hand.
+            bone_reach.clear();
             for b in 0..BONES_PER_HAND {
+                if let Some(motion) = self.motion(hand, Bone::from_index(b)) {
+                    bone_reach.push((b, motion, bone_aabb(&motion.now).loosened(self.config.contact_offset)));
+                }
+            }
+            let Some(hand_reach) = bone_reach.iter().map(|r| r.2).reduce(|a, b| a.merged(&b)) else { continue };
+            near_hand.clear();
+            near_hand.extend((0..object_boxes.len()).filter(|&o| hand_reach.intersects(&object_boxes[o])));
+            for &(b, motion, reach) in &bone_reach {
                 let bone = Bone::from_index(b);
-                let Some(motion) = self.motion(hand, bone) else { continue };
-                let reach = bone_aabb(&motion.now).loosened(self.config.contact_offset);
-                for (o, aabb) in object_boxes.iter().enumerate() {
+                for &o in &near_hand {
                     let key = (hand, b, ObjectId(o as u32));
-                    if !reach.intersects(aabb)
+                    if !reach.intersects(&object_boxes[o])
                         || live[..kept].binary_search_by_key(&key, |(c, _, _)| contact_key(c)).is_ok()
                     {
                         continue;
@@ -609,23 +623,30 @@ impl InteractionWorld {
                         continue;
                     };
                     let contact = Contact::begin(hand, bone, &prox, &motion, &view, &settings);
-                    live.push((contact, prox, motion));
+                    live.push((contact, Some(prox), motion));
                 }
             }
-        }
-        for (contact, _, _) in &live[kept..] {
-            self.push_event(ContactEventKind::Began, contact);
         }
 
         // 3. Forces, under each object's stability limit.
         let limits = self.stability_limits(&live);
         let mut scratch = std::mem::take(&mut self.scratch);
         let mut contacts = Vec::with_capacity(live.len());
-        for (mut contact, prox, motion) in live {
+        for (i, (mut contact, prox, motion)) in live.into_iter().enumerate() {
             let o = contact.object.0 as usize;
             let view = self.object_view(o, limits[o]);
-            contact.update(&prox, &motion, &view, &settings, &mut scratch);
-            self.apply(contact.object, &scratch);
+            let mut query = || {
+                proximity(&motion.now, &view.pose, view.shape, release).filter(|p| p.distance <= release)
+            };
+            let alive = contact.update(prox, &mut query, &motion, &view, &settings, &mut scratch);
+            if !alive {
+                self.push_event(ContactEventKind::Ended, &contact);
+                continue;
+            }
+            if i >= kept {
+                self.push_event(ContactEventKind::Began, &contact);
+            }
+            self.apply(contact.object, &scratch.forces);
             contacts.push(contact);
         }
         contacts.sort_by_key(contact_key);

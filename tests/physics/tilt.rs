@@ -44,12 +44,11 @@ fn slide_angle(material: Material) -> (f32, f32) {
         if first_dynamic.is_none() && world.contacts().iter().any(|c| c.state == FrictionState::Dynamic) {
             first_dynamic = Some(tilt);
         }
-        if let Some(r) = rest {
-            if (local - r).length() > 0.003 {
+        if let Some(r) = rest
+            && (local - r).length() > 0.003 {
                 assert_eq!(world.contacts().len(), 1, "only the palm touches the box");
                 return (tilt, first_dynamic.unwrap_or(f32::NAN));
             }
-        }
     }
     panic!("the box never slid up to 40°");
 }
