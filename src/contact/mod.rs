@@ -290,18 +290,24 @@ impl Contact {
         self.stiffness = gamma;
 
         // Eq. 3.4 with the penetration-speed limit: the depth the spring
-        // sees may grow by at most v_max·dt per step, so a bone that
-        // teleports deep inside (a tracking glitch) ramps in like a finger
-        // pressing at v_max instead of releasing the whole spring at once.
+        // sees may grow by at most v_max·dt per step beyond what the
+        // object's own approach adds, so a bone that teleports deep inside
+        // (a tracking glitch) ramps in like a finger pressing at v_max
+        // instead of releasing the whole spring at once, while an object
+        // falling onto a hand meets the full spring.
         let d = c - p;
         let depth = d.dot(n);
+        let object_velocity = object.velocity_at(c);
         let seen_depth = match settings.max_penetration_speed {
-            Some(v) => depth.min(a.limited_depth + v * settings.dt),
+            Some(v) => {
+                let approach = object_velocity.dot(n).max(0.0);
+                depth.min(a.limited_depth + (v + approach) * settings.dt)
+            }
             None => depth,
         };
         a.limited_depth = seen_depth.max(0.0);
         let spring = friction::spring_force(gamma, c, p) + gamma * (seen_depth - depth) * n;
-        let relative_velocity = (p - p_prev) / settings.dt - object.velocity_at(c);
+        let relative_velocity = (p - p_prev) / settings.dt - object_velocity;
         let f = friction::damped_spring_force(spring, object.damping, relative_velocity);
 
         let mut law = friction::resolve(f, n, object.mu, settings.kinetic);
