@@ -2,6 +2,7 @@
 //! friction contact forces, on top of rapier3d.
 //!
 //! The data path is the module layout:
+//! [`input`] (recordings, trackers, coordinate conversions) →
 //! [`hand`] (tracked skeletal poses) → [`contact`] (contact points, skin
 //! patches, slipping surface points) → [`friction`] (the pure contact law,
 //! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps rapier).
@@ -27,9 +28,11 @@
 pub mod contact;
 pub mod friction;
 pub mod hand;
+pub mod input;
 pub mod material;
 pub mod object;
 pub mod pipeline;
+pub mod replay;
 pub mod scenes;
 
 pub use contact::{Contact, ContactEvent, ContactEventKind};

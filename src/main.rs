@@ -27,6 +27,26 @@ enum Command {
         #[arg(long, default_value_t = 0.25)]
         every: f32,
     },
+    /// Replay a Leap Motion recording (.json.lz or .json) headlessly.
+    Replay {
+        /// The recording.
+        file: std::path::PathBuf,
+        /// Write one JSON line per physics step to this file.
+        #[arg(long)]
+        trace: Option<std::path::PathBuf>,
+        /// Print one JSON object instead of the summary.
+        #[arg(long)]
+        json: bool,
+        /// Where the desktop device sits in the world, "x,y,z" in metres.
+        #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
+        device: glam::Vec3,
+        /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
+        #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
+        object_at_grasp: Option<coulomb_hands::replay::GraspObject>,
+        /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
+        #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE)]
+        grace: f64,
+    },
     /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
     Bench {
         /// Steps to time after warm-up.
@@ -73,6 +93,81 @@ fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
     if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
 }
 
+fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
+    let v: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>()).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
+    match v.as_slice() {
+        [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok(glam::Vec3::new(*x, *y, *z)),
+        _ => Err(format!("expected three finite numbers \"x,y,z\", got \"{s}\"")),
+    }
+}
+
+/// Errors of a replay run, for the CLI.
+#[derive(Debug, thiserror::Error)]
+enum ReplayError {
+    #[error(transparent)]
+    Input(#[from] coulomb_hands::input::InputError),
+    #[error(transparent)]
+    World(#[from] coulomb_hands::WorldError),
+    #[error("trace: {0}")]
+    Trace(#[from] std::io::Error),
+}
+
+struct ReplayArgs<'a> {
+    file: &'a std::path::Path,
+    trace: Option<&'a std::path::Path>,
+    json: bool,
+    device: glam::Vec3,
+    grace: f64,
+    object: Option<coulomb_hands::replay::GraspObject>,
+}
+
+fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
+    use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
+    use coulomb_hands::replay::{place_at_grasp, replay, world_with_objects, write_trace_line};
+    let ReplayArgs { file, trace, json, device, grace, object } = args;
+    let recording = leap::load(file)?;
+    let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(device), grace)?;
+    let (mut world, _) = world_with_objects(InteractionConfig::default(), &[])?;
+    let mut removals = Vec::new();
+    let mut site = None;
+    if let Some(object) = object {
+        let (_, removal, s) = place_at_grasp(&mut world, &playback, object)?;
+        removals.push(removal);
+        site = Some(s);
+    }
+    let mut out = match trace {
+        Some(path) => Some(std::io::BufWriter::new(std::fs::File::create(path)?)),
+        None => None,
+    };
+    let summary = replay::<ReplayError>(&recording.source_name, &playback, &mut world, &removals, |_, line| {
+        if let Some(out) = out.as_mut() {
+            write_trace_line(out, line)?;
+        }
+        Ok(())
+    })?;
+    if let Some(mut out) = out {
+        std::io::Write::flush(&mut out)?;
+    }
+    if json {
+        println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
+        return Ok(());
+    }
+    println!("replayed {} (format {})", summary.source, recording.format_version);
+    println!("frames: {}, hands: {}, duration: {:.2} s, physics steps: {}", summary.frames, summary.hands, summary.duration, summary.steps);
+    if let Some(s) = site {
+        println!(
+            "grasp site ({:.3}, {:.3}, {:.3}) m, most closed at {:.2} s; support removed at {:.2} s",
+            s.point.x, s.point.y, s.point.z, s.closed_at, s.closing_at
+        );
+    }
+    println!("contacts begun: {}", summary.contacts_begun);
+    for o in &summary.objects {
+        println!("object {}: moved {:.3} m, max speed {:.3} m/s", o.name, o.displacement, o.max_speed);
+    }
+    println!("all values finite: {}", summary.all_finite);
+    Ok(())
+}
+
 fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
     let (mut world, _) = held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
     for _ in 0..100 {
@@ -101,6 +196,15 @@ fn main() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+        Command::Replay { file, trace, json, device, object_at_grasp, grace } => replay(ReplayArgs {
+            file: &file,
+            trace: trace.as_deref(),
+            json,
+            device,
+            grace,
+            object: object_at_grasp,
+        })
+        .map_err(|e| e.to_string()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

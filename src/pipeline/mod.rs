@@ -316,6 +316,12 @@ impl InteractionWorld {
         Ok(self.physics.insert_collider(collider, Some(body)))
     }
 
+    /// Removes static scenery added by [`Self::add_static`] (waking what
+    /// rested on it). Returns whether it existed.
+    pub fn remove_static(&mut self, handle: ColliderHandle) -> bool {
+        self.physics.remove_collider(handle).is_some()
+    }
+
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
         let shape = desc.validate()?;

@@ -5,6 +5,7 @@ mod grasp;
 mod lifecycle;
 mod pinch;
 mod push;
+mod recordings;
 mod safety;
 mod tilt;
 

@@ -1,0 +1,58 @@
+//! Tracking input: recordings and trackers → tracked hands → [`HandPose`].
+//!
+//! The stage before [`crate::hand`]: a [`TrackingFrame`] holds hands in the
+//! tracker's own units and axes; a [`convert::Conversion`] maps them into the
+//! world (metres, y up); [`skeleton::hand_pose`] builds the 16-bone model.
+
+pub mod convert;
+pub mod grasp;
+pub mod leap;
+pub mod playback;
+pub mod skeleton;
+
+use crate::hand::Side;
+use glam::Vec3;
+
+/// One hand as a tracker reports it, in the tracker's units and axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrackedHand {
+    /// The tracker's id for this hand; stable while it stays tracked.
+    pub id: i64,
+    pub side: Side,
+    /// Centre of the palm surface.
+    pub palm_position: Vec3,
+    /// Unit normal out of the palm (the grasping side).
+    pub palm_normal: Vec3,
+    /// Unit direction from the wrist towards the fingers.
+    pub direction: Vec3,
+    /// `joints[finger]`: thumb first; base of the proximal phalanx, then
+    /// the two interphalangeal joints, then the fingertip.
+    pub joints: [[Vec3; 4]; 5],
+    /// Finger widths (diameters), thumb first.
+    pub widths: [f32; 5],
+    /// The tracker's grab strength in [0, 1], when it reports one.
+    pub grab: Option<f32>,
+    /// The tracker's pinch strength in [0, 1], when it reports one.
+    pub pinch: Option<f32>,
+}
+
+/// All hands seen at one instant.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrackingFrame {
+    /// Tracker timestamp (µs).
+    pub timestamp_us: i64,
+    pub hands: Vec<TrackedHand>,
+}
+
+/// A problem with tracking input, located as precisely as possible.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{source_name}{}: {field}: {reason}", frame.map(|f| format!(": frame {f}")).unwrap_or_default())]
+pub struct InputError {
+    /// The file or stream the data came from.
+    pub source_name: String,
+    /// Index of the frame in the file, when the problem is in one frame.
+    pub frame: Option<usize>,
+    /// The field (a JSON path such as `hands[0].palmPosition`).
+    pub field: String,
+    pub reason: String,
+}

@@ -1,0 +1,121 @@
+//! Builds the 16-bone [`HandPose`] (§3.5.1) from a tracked hand.
+
+use super::TrackedHand;
+use super::convert::Conversion;
+use crate::hand::{Capsule, HandPose, Palm};
+use glam::Vec3;
+
+/// Why a tracked hand could not become a pose.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("hand {hand}: {reason}")]
+pub struct SkeletonError {
+    pub hand: i64,
+    pub reason: String,
+}
+
+/// The hand pose in world coordinates.
+///
+/// * Capsule radius = half the tracked finger width.
+/// * The distal capsule is shortened by its radius, so its rounded end
+///   reaches the tracked fingertip instead of overshooting it.
+/// * The palm box spans the knuckles: half width from the index–pinky
+///   knuckle spread plus half a finger, half length from the palm centre to
+///   the knuckles, half thickness half a finger width. Its grasping face lies
+///   on the tracked palm position.
+pub fn hand_pose(hand: &TrackedHand, conversion: &Conversion) -> Result<HandPose, SkeletonError> {
+    let fail = |reason: String| SkeletonError { hand: hand.id, reason };
+    let joints: [[Vec3; 4]; 5] = hand.joints.map(|finger| finger.map(|j| conversion.point(j)));
+    let radii: [f32; 5] = hand.widths.map(|w| 0.5 * conversion.length(w));
+    let normal = conversion.direction(hand.palm_normal);
+    let direction = conversion.direction(hand.direction);
+    let palm_position = conversion.point(hand.palm_position);
+
+    let knuckles = [1, 2, 3, 4].map(|f| joints[f][0]);
+    let mean_radius = radii.iter().sum::<f32>() / 5.0;
+    let knuckle_centre = knuckles.iter().copied().sum::<Vec3>() / 4.0;
+    let half_width = 0.5 * (knuckles[0] - knuckles[3]).length() + mean_radius;
+    let half_length = (knuckle_centre - palm_position).length().max(mean_radius);
+    let half_thickness = mean_radius;
+    let palm = Palm::from_normal_direction(
+        palm_position - normal * half_thickness,
+        normal,
+        direction,
+        Vec3::new(half_width, half_thickness, half_length),
+    )
+    .ok_or_else(|| fail("palm normal and direction are parallel or zero".into()))?;
+
+    let mut pose = HandPose::from_joints(palm, joints, radii);
+    for (f, finger) in pose.fingers.iter_mut().enumerate() {
+        let distal = &mut finger[2];
+        let axis = distal.b - distal.a;
+        let len = axis.length();
+        if len > 2.0 * distal.radius {
+            distal.b -= axis / len * distal.radius;
+        } else if len > 0.0 {
+            distal.b = distal.a + axis * 0.5;
+        }
+        if !radii[f].is_finite() {
+            return Err(fail(format!("finger {f} width is not finite")));
+        }
+    }
+    Ok(pose)
+}
+
+/// Copies of a pose blended `t` of the way from `a` to `b` (joint by joint;
+/// the palm rotation by normalised lerp of the shortest arc).
+pub fn blend(a: &HandPose, b: &HandPose, t: f32) -> HandPose {
+    let mut out = a.clone();
+    out.palm.center = a.palm.center.lerp(b.palm.center, t);
+    out.palm.half_extents = a.palm.half_extents.lerp(b.palm.half_extents, t);
+    out.palm.rotation = a.palm.rotation.slerp(b.palm.rotation, t).normalize();
+    for (f, finger) in out.fingers.iter_mut().enumerate() {
+        for (p, bone) in finger.iter_mut().enumerate() {
+            let (x, y) = (&a.fingers[f][p], &b.fingers[f][p]);
+            *bone = Capsule { a: x.a.lerp(y.a, t), b: x.b.lerp(y.b, t), radius: x.radius + (y.radius - x.radius) * t };
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hand::Side;
+
+    fn flat_hand() -> TrackedHand {
+        let x = |f: usize| 20.0 * f as f32 - 40.0;
+        TrackedHand {
+            id: 1,
+            side: Side::Right,
+            palm_position: Vec3::new(0.0, 200.0, 0.0),
+            palm_normal: -Vec3::Y,
+            direction: -Vec3::Z,
+            joints: std::array::from_fn(|f| {
+                [-40.0, -80.0, -105.0, -125.0].map(|z| Vec3::new(x(f), 200.0, z))
+            }),
+            widths: [18.0; 5],
+            grab: None,
+            pinch: None,
+        }
+    }
+
+    #[test]
+    fn builds_a_valid_pose_in_metres() {
+        let pose = hand_pose(&flat_hand(), &Conversion::mm_to_m()).unwrap();
+        pose.validate(0).unwrap();
+        assert!((pose.fingers[1][0].radius - 0.009).abs() < 1e-6);
+        // Distal shortened by its radius: its far end is 9 mm short of the tip.
+        assert!((pose.fingers[1][2].b - Vec3::new(-0.02, 0.2, -0.116)).length() < 1e-5);
+        // The palm's grasping face (−y here) is at the tracked palm position.
+        let face = pose.palm.to_world(Vec3::new(0.0, pose.palm.half_extents.y, 0.0));
+        assert!((face - Vec3::new(0.0, 0.2, 0.0)).length() < 1e-5);
+        assert!((pose.palm.normal() + Vec3::Y).length() < 1e-5);
+    }
+
+    #[test]
+    fn parallel_palm_axes_are_an_error() {
+        let mut h = flat_hand();
+        h.direction = h.palm_normal;
+        assert!(hand_pose(&h, &Conversion::mm_to_m()).is_err());
+    }
+}
