@@ -11,8 +11,8 @@
 //!   hovers in the offset band or pulls away) it transmits no force and its
 //!   anchors follow the bone ([`FrictionState::Separated`]).
 //! * **Ends** when the bone's surface is farther than
-//!   [`crate::InteractionConfig::release_offset`] from the object, when the
-//!   hand loses tracking, or when the hand or object is removed.
+//!   [`crate::InteractionConfig::release_offset`] from the object, or when
+//!   the hand loses tracking.
 //!
 //! # Which bone point is `p`
 //! The thesis uses the phalanx centroid, so a bone must sink by its own
@@ -108,7 +108,9 @@ pub(crate) struct ObjectView<'a> {
     pub center_of_mass: Vec3,
     pub gamma: f32,
     pub damping: f32,
-    pub force_cap: Option<f32>,
+    /// The deepest penetration the spring sees (m): 20 % of the object's
+    /// bounding diameter (the force cap), or `None`.
+    pub max_depth: Option<f32>,
     pub mu: FrictionCoefficients,
 }
 
@@ -184,12 +186,17 @@ fn anchor_on_bone(bone: &BoneShape, palm: &Palm, c: Vec3, n: Vec3) -> BoneAnchor
             BoneAnchor::Capsule { s: cap.closest_parameter(c), dir_in_palm: dir }
         }
         BoneShape::Palm(p) => {
-            // The palm surface point under C: C moved back along −n to the
-            // palm's nearest face while C is inside the palm, else the
-            // palm's closest point to C.
+            // The palm surface point under C: where a ray from C along −n
+            // leaves the palm box while C is inside it, else the palm's
+            // closest point to C.
             let local = p.to_local(c);
             let under = if local.abs().cmple(p.half_extents).all() {
-                c - n * (p.half_extents - local.abs()).min_element()
+                let dir = p.rotation.inverse() * -n;
+                let exit = (0..3)
+                    .filter(|&i| dir[i].abs() > 1e-6)
+                    .map(|i| (p.half_extents[i].copysign(dir[i]) - local[i]) / dir[i])
+                    .fold(f32::INFINITY, f32::min);
+                if exit.is_finite() { c - n * exit } else { c }
             } else {
                 p.to_world(local.clamp(-p.half_extents, p.half_extents))
             };
@@ -298,7 +305,7 @@ impl Contact {
         let d = c - p;
         let depth = d.dot(n);
         let object_velocity = object.velocity_at(c);
-        let seen_depth = match settings.max_penetration_speed {
+        let mut seen_depth = match settings.max_penetration_speed {
             Some(v) => {
                 let approach = object_velocity.dot(n).max(0.0);
                 depth.min(a.limited_depth + (v + approach) * settings.dt)
@@ -306,17 +313,34 @@ impl Contact {
             None => depth,
         };
         a.limited_depth = seen_depth.max(0.0);
+        // The force cap: the spring never sees more than the thesis's 20 %
+        // penetration, so its normal force stays ≤ γ·0.2·d.
+        if let Some(max) = object.max_depth {
+            seen_depth = seen_depth.min(max);
+        }
         let spring = friction::spring_force(gamma, c, p) + gamma * (seen_depth - depth) * n;
-        let relative_velocity = (p - p_prev) / settings.dt - object_velocity;
+        // The bone's velocity, with its speed into the object held to the
+        // same limit, so a teleporting bone cannot kick through the damper.
+        let mut bone_velocity = (p - p_prev) / settings.dt;
+        if let Some(v) = settings.max_penetration_speed {
+            let into = -bone_velocity.dot(n);
+            if into > v {
+                bone_velocity += (into - v) * n;
+            }
+        }
+        let relative_velocity = bone_velocity - object_velocity;
         let f = friction::damped_spring_force(spring, object.damping, relative_velocity);
 
-        let mut law = friction::resolve(f, n, object.mu, settings.kinetic);
-        if let Some(cap) = object.force_cap {
-            let fn_mag = law.normal.length();
-            if fn_mag > cap {
-                law.normal *= cap / fn_mag;
-            }
-            let ft_cap = object.mu.static_mu * cap;
+        // A bone that has not reached the surface pushes nothing, whatever
+        // its speed: the damper only acts on a penetrating bone.
+        let mut law = if seen_depth <= 0.0 {
+            friction::resolve(Vec3::ZERO, n, object.mu, settings.kinetic)
+        } else {
+            friction::resolve(f, n, object.mu, settings.kinetic)
+        };
+        if let Some(max) = object.max_depth {
+            // Eq. 3.8 as written scales an unbounded stretch: bound it too.
+            let ft_cap = object.mu.static_mu.max(object.mu.dynamic_mu) * gamma * max;
             let ft_mag = law.tangential.length();
             if ft_mag > ft_cap {
                 law.tangential *= ft_cap / ft_mag;
@@ -330,6 +354,12 @@ impl Contact {
         self.force = law.on_object();
 
         match law.state {
+            FrictionState::Separated if depth > 0.0 => {
+                // Still inside, but the damper says the surfaces part faster
+                // than the spring pushes: no force this step, anchors kept.
+                self.samples.clear();
+                return true;
+            }
             FrictionState::Separated => {
                 // Not pressing: no force, and the contact re-anchors at the
                 // current closest features so the next press starts fresh.
@@ -356,7 +386,7 @@ impl Contact {
                 let target = match settings.kinetic {
                     KineticFriction::Coulomb => {
                         let slip = (d - depth * n).normalize_or_zero();
-                        let keep = friction::kinetic_stretch(self.normal_force, object.mu.dynamic_mu, gamma);
+                        let keep = friction::kinetic_stretch(self.normal_force, object.mu, gamma);
                         Some(site.point + slip * keep)
                     }
                     KineticFriction::Thesis => None,
@@ -367,6 +397,13 @@ impl Contact {
                     let shift = moved.point - c;
                     a.c_local = pose.inverse_transform_point(moved.point);
                     a.n_local = pose.rotation.inverse() * moved.normal;
+                    // The skin offsets live in the bone frame, which the new
+                    // anchor redefines: carry them over.
+                    let carry = bone_rotation(bone_anchor, motion.now, &motion.palm_now).inverse()
+                        * bone_rotation(a.bone, motion.now, &motion.palm_now);
+                    for (_, skin) in a.samples.iter_mut() {
+                        *skin = carry * *skin;
+                    }
                     a.bone = bone_anchor;
                     for (ci_local, _) in a.samples.iter_mut() {
                         let ci = pose.transform_point(*ci_local) + shift;

@@ -38,7 +38,9 @@ pub enum KineticFriction {
     /// Coulomb's kinetic friction: `f_T = μ_dyn·|f_n|` along `f_t`'s
     /// direction. The default, because it is the law the thesis names and it
     /// makes the simulated slip threshold independent of how fast the hand
-    /// moves (tested in `tests/physics`).
+    /// moves (tested in `tests/physics`). It never exceeds the spring's own
+    /// tangential force `|f_t|`, so a material whose measured μ_dyn is above
+    /// its μ_st cannot make friction push harder than the skin is stretched.
     #[default]
     Coulomb,
 }
@@ -111,7 +113,7 @@ pub fn tangential_friction(
     match kinetic {
         KineticFriction::Thesis => dynamic_mu * f_t,
         KineticFriction::Coulomb => {
-            dynamic_mu * normal_magnitude.abs() * f_t.normalize_or_zero()
+            (dynamic_mu * normal_magnitude.abs()).min(f_t.length()) * f_t.normalize_or_zero()
         }
     }
 }
@@ -180,11 +182,14 @@ pub fn damped_spring_force(spring: Vec3, damping: f32, relative_velocity: Vec3) 
 /// after its surface point has moved: the stretch whose spring force equals
 /// the kinetic friction `μ_dyn·f_n` (Coulomb), so the contact stays on the
 /// boundary of the dynamic cone instead of snapping back to zero force.
-pub fn kinetic_stretch(normal_magnitude: f32, dynamic_mu: f32, gamma: f32) -> f32 {
+/// Where μ_dyn > μ_st the stretch stops at the static cone: a contact
+/// re-anchored beyond it would keep slipping and pull harder than it can
+/// hold, feeding energy in.
+pub fn kinetic_stretch(normal_magnitude: f32, mu: FrictionCoefficients, gamma: f32) -> f32 {
     if gamma <= 0.0 {
         return 0.0;
     }
-    (dynamic_mu * normal_magnitude.max(0.0) / gamma).max(0.0)
+    (mu.dynamic_mu.min(mu.static_mu) * normal_magnitude.max(0.0) / gamma).max(0.0)
 }
 
 #[cfg(test)]
@@ -270,8 +275,21 @@ mod tests {
 
     #[test]
     fn kinetic_stretch_balances_kinetic_friction() {
-        let s = kinetic_stretch(2.0, 0.4, 400.0);
+        let s = kinetic_stretch(2.0, MU, 400.0);
         assert!((400.0 * s - 0.4 * 2.0).abs() < 1e-6);
-        assert_eq!(kinetic_stretch(-1.0, 0.4, 400.0), 0.0);
+        assert_eq!(kinetic_stretch(-1.0, MU, 400.0), 0.0);
+        // μ_dyn above μ_st (aluminium's published pair): stop at the static cone.
+        let alu = FrictionCoefficients { static_mu: 0.38, dynamic_mu: 0.6 };
+        assert!((400.0 * kinetic_stretch(2.0, alu, 400.0) - 0.38 * 2.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn coulomb_friction_never_exceeds_the_springs_own_pull() {
+        // Just outside a μ_st 0.38 cone, with μ_dyn 0.6: μ_dyn·f_n = 0.6 N
+        // would exceed the 0.4 N the spring actually pulls with.
+        let alu = FrictionCoefficients { static_mu: 0.38, dynamic_mu: 0.6 };
+        let r = resolve(Vec3::new(0.4, 1.0, 0.0), Vec3::Y, alu, KineticFriction::Coulomb);
+        assert_eq!(r.state, FrictionState::Dynamic);
+        assert!((r.tangential.length() - 0.4).abs() < 1e-6);
     }
 }

@@ -64,9 +64,9 @@ pub struct InteractionConfig {
     /// pure spring. The damper acts on the bone-vs-object velocity at the
     /// contact with `c = 2ζ√(γ m)`.
     pub damping_ratio: Option<f32>,
-    /// Cap each contact's normal force at `γ·0.2·d`, the force at the
-    /// thesis's assumed 20 % maximum penetration, and its friction at
-    /// `μ_st` times that.
+    /// Cap each contact's spring at the thesis's assumed 20 % maximum
+    /// penetration of the object's bounding diameter d: its normal spring
+    /// force stays ≤ `γ·0.2·d` however deep a bone is.
     pub force_cap: bool,
     /// The penetration depth a contact's spring sees may grow by at most
     /// this speed (m/s), or `None` for no limit. Real fingers press slower;
@@ -135,8 +135,9 @@ impl InteractionConfig {
             && !pos(g) {
                 return err("gamma", format!("must be positive, got {g}"));
             }
-        if self.patch.samples == 0 || self.patch.samples > 64 {
-            return err("patch.samples", format!("must be in 1..=64, got {}", self.patch.samples));
+        if self.patch.samples == 0 || self.patch.samples == 2 || self.patch.samples > 64 {
+            // Two samples cannot be centred on C (one sits on it).
+            return err("patch.samples", format!("must be 1 or 3..=64, got {}", self.patch.samples));
         }
         for (field, v) in [
             ("patch.finger_radius", self.patch.finger_radius),
@@ -295,8 +296,10 @@ impl InteractionWorld {
         &self.physics
     }
 
-    /// Mutable access to the rapier world. Do not insert hand bones: a
-    /// colliding bone would bypass the friction model.
+    /// Mutable access to the rapier world, for solver settings, joints and
+    /// scripted set-up. Do not insert hand bones (a colliding bone would
+    /// bypass the friction model), and do not remove the bodies or colliders
+    /// of objects added with [`Self::add_object`]: the world indexes them.
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
         &mut self.physics
     }
@@ -316,10 +319,20 @@ impl InteractionWorld {
         Ok(self.physics.insert_collider(collider, Some(body)))
     }
 
-    /// Removes static scenery added by [`Self::add_static`] (waking what
-    /// rested on it). Returns whether it existed.
+    /// Removes static scenery added by [`Self::add_static`], with its fixed
+    /// body, waking what rested on it. Returns `false` (and removes
+    /// nothing) for an unknown handle or an object's collider.
     pub fn remove_static(&mut self, handle: ColliderHandle) -> bool {
-        self.physics.remove_collider(handle).is_some()
+        if self.objects.iter().any(|o| o.collider == handle) {
+            return false;
+        }
+        let Some(body) = self.physics.colliders.get(handle).and_then(|c| c.parent()) else {
+            return false;
+        };
+        if !self.physics.bodies.get(body).is_some_and(|b| b.is_fixed()) {
+            return false;
+        }
+        self.physics.remove_body_with_colliders(body, true).is_some()
     }
 
     /// Adds a dynamic object that hands can touch.
@@ -477,7 +490,7 @@ impl InteractionWorld {
             center_of_mass: body.center_of_mass(),
             gamma: slot.gamma * limit.stiffness,
             damping: damping * limit.damping,
-            force_cap: self.config.force_cap.then(|| friction::force_cap(slot.gamma, slot.diameter)),
+            max_depth: self.config.force_cap.then(|| friction::MAX_PENETRATION_FRACTION * slot.diameter),
             mu: slot.material.skin,
         }
     }

@@ -76,3 +76,27 @@ fn losing_tracking_releases_the_hands_contacts() {
     // The box is pushed by nothing now: it rests on the ground.
     assert!(world.object_state(coulomb_hands::ObjectId(0)).unwrap().hand_force.length() == 0.0);
 }
+
+#[test]
+fn a_fast_bone_pushes_nothing_before_it_touches() {
+    // Coming down at 1 m/s from 2 cm above: the damper must not push early.
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let gap = |t: f32| 0.02 - 1.0 * t;
+    let mut early = Vec::new();
+    let mut touched = false;
+    run(&mut world, hand, 0.03, |t| finger_above(gap(t)), |w, t| {
+        let top = w.object_state(id).unwrap().position.y + 0.025;
+        let real_gap = 0.05 + gap(t - w.config().dt) - top;
+        for c in w.contacts() {
+            if real_gap > 0.0 && c.force.length() > 0.0 {
+                early.push((real_gap, c.force.length()));
+            }
+            touched |= c.normal_force > 0.0;
+        }
+    });
+    assert!(early.is_empty(), "pushed before touching: (gap m, force N) {early:?}");
+    assert!(touched, "it did press once through the surface");
+}

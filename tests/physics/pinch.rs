@@ -19,9 +19,13 @@ struct Pinch {
 /// A box in mid-air squeezed by the index distal bones of two hands, one
 /// on each x face, each sunk `depth` into the box; nothing else touches it.
 fn pinch(config: InteractionConfig, depth: f32) -> Pinch {
+    pinch_with(config, depth, test_material(0.5))
+}
+
+fn pinch_with(config: InteractionConfig, depth: f32, material: Material) -> Pinch {
     let mut world = InteractionWorld::new(config).unwrap();
     let desc = ObjectDesc::cuboid("box", Vec3::splat(2.0 * HALF), MASS, Vec3::new(0.0, 0.5, 0.0))
-        .with_material(test_material(0.5));
+        .with_material(material);
     let box_id = world.add_object(&desc).unwrap();
     let mut poses = [parked_hand(Side::Left), parked_hand(Side::Right)];
     let mut hands = [HandId(0); 2];
@@ -74,9 +78,19 @@ fn depth_for(k: f32, gamma: f32) -> f32 {
 #[test]
 fn holds_with_a_25_percent_margin_over_coulombs_threshold() {
     let mut p = pinch(InteractionConfig::default(), depth_for(1.25, 400.0));
+    p.hold(0.1);
+    // A static contact's C is fixed on the box: record it in the box frame.
+    let in_box = |p: &Pinch| {
+        let s = p.world.object_state(p.box_id).unwrap();
+        p.world.contacts().iter().map(|c| s.rotation.inverse() * (c.point - s.position)).collect::<Vec<_>>()
+    };
+    let anchored = in_box(&p);
     let drop = p.hold(2.0);
     // Measured from the release, so the elastic sag m g / 2γ ≈ 0.6 mm counts too.
     assert!(drop < 0.002, "box drifted {:.2} mm in 2 s", drop * 1e3);
+    for (a, b) in anchored.iter().zip(in_box(&p)) {
+        assert!(a.distance(b) < 1e-5, "C moved on the box from {a:?} to {b:?}");
+    }
     // The hold really was at the intended normal force (no hidden margin).
     let contacts = p.world.contacts();
     assert_eq!(contacts.len(), 2, "{contacts:?}");
@@ -93,6 +107,19 @@ fn slips_when_the_squeeze_is_25_percent_below_the_threshold() {
     let mut p = pinch(InteractionConfig::default(), depth_for(0.75, 400.0));
     let drop = p.hold(2.0);
     assert!(drop > 0.01, "box only dropped {:.2} mm", drop * 1e3);
+}
+
+#[test]
+fn a_material_whose_sliding_mu_exceeds_its_static_mu_still_slips() {
+    // Aluminium's published pair: μ_st 0.38 (pinch), μ_dyn 0.6 (sliding).
+    // 25 % under the static threshold the box must slip down, not climb.
+    let alu = Material::named("aluminium").unwrap();
+    let depth = 0.75 * MASS * 9.81 / (2.0 * alu.skin.static_mu * 400.0);
+    let mut p = pinch_with(InteractionConfig::default(), depth, alu);
+    let start = position(&p.world, p.box_id).y;
+    let drop = p.hold(2.0);
+    let end = position(&p.world, p.box_id).y;
+    assert!(drop > 0.01 && end < start, "dropped {:.2} mm, ended {:+.2} mm", drop * 1e3, (end - start) * 1e3);
 }
 
 #[test]
@@ -116,13 +143,21 @@ fn one_or_nine_samples_give_the_same_total_force() {
             patch: PatchConfig { samples, ..PatchConfig::default() },
             ..InteractionConfig::default()
         };
+        // One step from the same state: both see the same contacts.
         let mut p = pinch(config, depth_for(1.25, 400.0));
-        p.hold(0.5);
-        p.world.object_state(p.box_id).unwrap().hand_force
+        p.hold(0.01);
+        let total = p.world.object_state(p.box_id).unwrap().hand_force;
+        let forces: Vec<Vec3> = p.world.contacts().iter().map(|c| c.force).collect();
+        let sum: Vec3 = forces.iter().copied().sum();
+        assert!((total - sum).length() < 1e-6, "the samples' forces add up to the contacts' forces");
+        forces
     };
     let (one, nine) = (total(1), total(9));
-    assert!(one.length() > 0.3, "the hands hold the weight: {one:?}");
-    assert!((one - nine).length() < 0.01 * one.length(), "1 sample {one:?} vs 9 samples {nine:?}");
+    assert_eq!(one.len(), 2);
+    for (a, b) in one.iter().zip(&nine) {
+        assert!(a.length() > 0.1, "each bone pushes: {a:?}");
+        assert!((*a - *b).length() < 1e-3 * a.length(), "1 sample {a:?} vs 9 samples {b:?}");
+    }
 }
 
 #[test]

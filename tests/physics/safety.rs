@@ -11,10 +11,10 @@ const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
 
 const GLITCH_BOX: f32 = 0.08;
 
-/// An 8 cm, 50 g box on the ground; the index distal bone appears across
-/// it with its axis 3 cm inside the −x face (its nearest face), and stays
-/// there for 1 s. Returns the box's top speed and the largest single
-/// contact force.
+/// An 8 cm, 50 g box on the ground; the index distal bone lies across it
+/// 2 mm outside the −x face for 0.1 s, then jumps in one frame to 3 cm
+/// inside that face (its nearest) and stays there. Returns the box's top
+/// speed and the largest single contact force.
 fn deep_glitch(config: InteractionConfig) -> (f32, f32) {
     let mut world = InteractionWorld::new(config).unwrap();
     world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
@@ -22,10 +22,15 @@ fn deep_glitch(config: InteractionConfig) -> (f32, f32) {
     let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(GLITCH_BOX), 0.05, Vec3::new(0.0, h, 0.0))).unwrap();
     let hand = world.add_hand(Side::Right);
     let mut pose = parked_hand(Side::Right);
-    let x = -h + 0.03;
-    set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(x, h, -0.06), b: Vec3::new(x, h, 0.06), radius: 0.008 });
+    let bone_at = |x: f32| {
+        let mut p = pose.clone();
+        set_bone(&mut p, INDEX_DISTAL, Capsule { a: Vec3::new(x, h, -0.06), b: Vec3::new(x, h, 0.06), radius: 0.008 });
+        p
+    };
+    let (outside, inside) = (bone_at(-h - 0.008 - 0.002), bone_at(-h + 0.03));
+    pose = outside.clone();
     let (mut speed, mut force) = (0.0f32, 0.0f32);
-    run(&mut world, hand, 1.0, |_| pose.clone(), |w, _| {
+    run(&mut world, hand, 1.1, |t| if t < 0.1 { pose.clone() } else { inside.clone() }, |w, _| {
         speed = speed.max(w.object_state(id).unwrap().linvel.length());
         force = w.contacts().iter().map(|c| c.force.length()).fold(force, f32::max);
     });
@@ -48,13 +53,14 @@ fn without_the_safeguards_the_same_glitch_launches_it() {
 
 #[test]
 fn the_force_cap_bounds_a_deep_contact() {
-    let config = InteractionConfig { max_penetration_speed: None, ..InteractionConfig::default() };
+    // The cap alone: no damper and no speed limit to help it.
+    let config = InteractionConfig { max_penetration_speed: None, damping_ratio: None, ..InteractionConfig::default() };
     let (_, force) = deep_glitch(config);
     let diameter = GLITCH_BOX * 3f32.sqrt();
     let cap = force_cap(400.0, diameter);
     // Normal ≤ cap and friction ≤ μ_st·cap (wood 0.46).
     assert!(force <= cap * (1.0 + 0.46f32.powi(2)).sqrt() * 1.001, "{force} N > cap {cap} N");
-    let uncapped = InteractionConfig { force_cap: false, max_penetration_speed: None, ..InteractionConfig::default() };
+    let uncapped = InteractionConfig { force_cap: false, ..config };
     let (_, raw) = deep_glitch(uncapped);
     assert!(raw > 1.2 * cap, "without the cap the glitch pushes {raw} N, above the cap {cap} N");
 }
@@ -101,6 +107,7 @@ fn drag_ratio(kinetic: KineticFriction) -> f32 {
     let base = parked_hand(Side::Right);
     let r = 0.008;
     let mut ratio = 0.0f32;
+    let mut dynamic_ratio = None::<f32>;
     run(&mut world, hand, 0.6, |t| {
         // Press 3 mm into the top face, then sweep +x at 1 m/s.
         let x = (t - 0.3).max(0.0) * 1.0;
@@ -113,9 +120,16 @@ fn drag_ratio(kinetic: KineticFriction) -> f32 {
             if c.normal_force > 0.1 {
                 let tangential = (c.force + c.normal_force * c.normal).length();
                 ratio = ratio.max(tangential / c.normal_force);
+                if c.state == coulomb_hands::FrictionState::Dynamic {
+                    dynamic_ratio = Some(tangential / c.normal_force);
+                }
             }
         }
     });
+    if kinetic == KineticFriction::Coulomb {
+        let r = dynamic_ratio.expect("the fast sweep slips");
+        assert!((r - 0.4).abs() < 1e-3, "a slipping Coulomb contact pulls with μ_dyn·f_n, got ratio {r}");
+    }
     ratio
 }
 
