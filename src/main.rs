@@ -43,6 +43,9 @@ enum Command {
         /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
         #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
         object_at_grasp: Option<coulomb_hands::replay::GraspObject>,
+        /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
+        #[arg(long, default_value = "400", value_parser = parse_gamma)]
+        gamma: coulomb_hands::GammaMode,
         /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
         #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE)]
         grace: f64,
@@ -93,6 +96,16 @@ fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
     if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
 }
 
+fn parse_gamma(s: &str) -> Result<coulomb_hands::GammaMode, String> {
+    if s == "auto" {
+        return Ok(coulomb_hands::GammaMode::Auto);
+    }
+    match s.parse::<f32>() {
+        Ok(g) if g.is_finite() && g > 0.0 => Ok(coulomb_hands::GammaMode::Fixed(g)),
+        _ => Err(format!("expected \"auto\" or a positive number of N/m, got \"{s}\"")),
+    }
+}
+
 fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
     let v: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>()).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
     match v.as_slice() {
@@ -118,28 +131,29 @@ struct ReplayArgs<'a> {
     json: bool,
     device: glam::Vec3,
     grace: f64,
+    gamma: coulomb_hands::GammaMode,
     object: Option<coulomb_hands::replay::GraspObject>,
 }
 
 fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
     use coulomb_hands::replay::{place_at_grasp, replay, world_with_objects, write_trace_line};
-    let ReplayArgs { file, trace, json, device, grace, object } = args;
+    let ReplayArgs { file, trace, json, device, grace, gamma, object } = args;
     let recording = leap::load(file)?;
     let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(device), grace)?;
-    let (mut world, _) = world_with_objects(InteractionConfig::default(), &[])?;
-    let mut removals = Vec::new();
+    let (mut world, _) = world_with_objects(InteractionConfig { gamma, ..InteractionConfig::default() }, &[])?;
+    let mut fixtures = Vec::new();
     let mut site = None;
     if let Some(object) = object {
-        let (_, removal, s) = place_at_grasp(&mut world, &playback, object)?;
-        removals.push(removal);
+        let (fixture, s) = place_at_grasp(&mut world, &playback, object, 0)?;
+        fixtures.push(fixture);
         site = Some(s);
     }
     let mut out = match trace {
         Some(path) => Some(std::io::BufWriter::new(std::fs::File::create(path)?)),
         None => None,
     };
-    let summary = replay::<ReplayError>(&recording.source_name, &playback, &mut world, &removals, |_, line| {
+    let summary = replay::<ReplayError>(&recording.source_name, &playback, &mut world, &fixtures, |_, line| {
         if let Some(out) = out.as_mut() {
             write_trace_line(out, line)?;
         }
@@ -156,8 +170,8 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     println!("frames: {}, hands: {}, duration: {:.2} s, physics steps: {}", summary.frames, summary.hands, summary.duration, summary.steps);
     if let Some(s) = site {
         println!(
-            "grasp site ({:.3}, {:.3}, {:.3}) m, most closed at {:.2} s; support removed at {:.2} s",
-            s.point.x, s.point.y, s.point.z, s.closed_at, s.closing_at
+            "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",
+            s.point.x, s.point.y, s.point.z, s.closing_at, s.open_at, s.closed_at
         );
     }
     println!("contacts begun: {}", summary.contacts_begun);
@@ -196,12 +210,13 @@ fn main() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
-        Command::Replay { file, trace, json, device, object_at_grasp, grace } => replay(ReplayArgs {
+        Command::Replay { file, trace, json, device, object_at_grasp, gamma, grace } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),
             json,
             device,
             grace,
+            gamma,
             object: object_at_grasp,
         })
         .map_err(|e| e.to_string()),

@@ -1,10 +1,9 @@
 //! Headless replay of a hand-tracking recording through the interaction
 //! world, with a per-step trace and a summary.
 
-use crate::input::grasp::{GraspSite, find_grasp};
+use crate::input::grasp::{GraspSite, find_grasps};
 use crate::input::playback::Playback;
 use crate::object::ShapeDesc;
-use rapier3d::prelude::ColliderHandle;
 use crate::object::{ObjectDesc, ObjectId, StaticDesc};
 use crate::pipeline::{HandId, InteractionConfig, InteractionWorld, WorldError};
 use crate::{ContactEventKind, Side};
@@ -111,44 +110,53 @@ impl std::str::FromStr for GraspObject {
     }
 }
 
-/// Places `object` at the recording's grasp site, resting on a static
-/// support from the ground up, which is removed once the grasp has closed.
-/// Returns the object, the removal to schedule, and the site.
+/// An object held in place at a grasp site until the hand grips it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fixture {
+    pub object: ObjectId,
+    /// Released when the hand grips it, or at the grasp's most closed
+    /// instant at the latest (s).
+    pub release_by: f64,
+}
+
+/// Places `object` at the site of the recording's `index`-th grasp (in
+/// time order), held fixed in place (as if on a support) until the hand
+/// grips it. The recorded hand grasped nothing, so without the fixture a
+/// finger arriving early would knock the object away before the others
+/// close on it.
 pub fn place_at_grasp(
     world: &mut InteractionWorld,
     playback: &Playback,
     object: GraspObject,
-) -> Result<(ObjectId, (f64, ColliderHandle), GraspSite), WorldError> {
-    let site = find_grasp(playback, 0.005).ok_or_else(|| {
-        WorldError::Object(crate::ObjectError::new("grasp object", "site", "no hand is ever tracked in the recording"))
+    index: usize,
+) -> Result<(Fixture, GraspSite), WorldError> {
+    let grasps = find_grasps(playback, 0.005);
+    let site = *grasps.get(index).ok_or_else(|| {
+        WorldError::Object(crate::ObjectError::new(
+            "grasp object",
+            "site",
+            format!("the recording has {} grasps, not {}", grasps.len(), index + 1),
+        ))
     })?;
     let half = 0.5 * object.size;
     let shape = if object.sphere { ShapeDesc::Sphere { radius: half } } else { ShapeDesc::Box { half_extents: Vec3::splat(half) } };
     let desc = ObjectDesc { shape, ..ObjectDesc::cuboid("grasped", Vec3::splat(object.size), object.mass, site.point) };
     let id = world.add_object(&desc)?;
-    let bottom = site.point.y - half;
-    let support = StaticDesc {
-        name: "support".to_string(),
-        shape: ShapeDesc::Box { half_extents: Vec3::new(0.5 * half, 0.5 * bottom.max(0.001), 0.5 * half) },
-        position: Vec3::new(site.point.x, 0.5 * bottom, site.point.z),
-        rotation: glam::Quat::IDENTITY,
-        friction: 0.5,
-    };
-    let handle = world.add_static(&support)?;
-    Ok((id, (site.closing_at, handle), site))
+    world.set_object_locked(id, true)?;
+    Ok((Fixture { object: id, release_by: site.closed_at }, site))
 }
 
-/// Replays `playback` into `world` for its whole duration, removing each
-/// static in `removals` at its time (s). Calls `each` after every step with
+/// Replays `playback` into `world` for its whole duration, releasing each
+/// fixture when its object is gripped. Calls `each` after every step with
 /// the step's trace line; its error stops the run.
 pub fn replay<E: From<WorldError>>(
     source: &str,
     playback: &Playback,
     world: &mut InteractionWorld,
-    removals: &[(f64, ColliderHandle)],
+    fixtures: &[Fixture],
     mut each: impl FnMut(&InteractionWorld, &TraceLine) -> Result<(), E>,
 ) -> Result<ReplaySummary, E> {
-    let mut removals = removals.to_vec();
+    let mut fixtures = fixtures.to_vec();
     let hands: Vec<HandId> = playback.tracks.iter().map(|tr| world.add_hand(tr.side)).collect();
     let dt = world.config().dt as f64;
     let steps = (playback.duration / dt).floor() as usize + 1;
@@ -158,13 +166,12 @@ pub fn replay<E: From<WorldError>>(
     let (mut begun, mut all_finite) = (0, true);
     for i in 0..steps {
         let t = i as f64 * dt;
-        removals.retain(|&(at, handle)| {
-            let due = at <= t;
-            if due {
-                world.remove_static(handle);
-            }
-            !due
-        });
+        let (due, waiting): (Vec<Fixture>, Vec<Fixture>) =
+            fixtures.iter().partition(|f| f.release_by <= t || world.is_gripped(f.object));
+        for f in due {
+            world.set_object_locked(f.object, false)?;
+        }
+        fixtures = waiting;
         let mut trace_hands = Vec::new();
         for (k, hand) in hands.iter().enumerate() {
             match playback.sample(k, t) {

@@ -1,7 +1,7 @@
 //! Where and when a recorded hand grasps: computed from the recording
 //! itself, so an object can be placed in the hand of any recording.
 
-use super::playback::Playback;
+use super::playback::{HandSample, Playback};
 use glam::Vec3;
 
 /// The grasp of a recording.
@@ -12,9 +12,10 @@ pub struct GraspSite {
     pub point: Vec3,
     /// The most closed instant (s).
     pub closed_at: f64,
-    /// When the closing that ends in the most closed instant passed three
-    /// quarters of the way from the widest to the closest aperture (s).
+    /// When the hand became three quarters closed (s).
     pub closing_at: f64,
+    /// When it opened again past that (s).
+    pub open_at: f64,
     /// Thumb-to-nearest-fingertip distances at the widest and closest (m).
     pub aperture_range: (f32, f32),
     /// The track (hand) that grasps.
@@ -31,41 +32,78 @@ fn aperture(tips: &[Vec3; 5]) -> f32 {
     tips[1..].iter().map(|t| t.distance(tips[0])).fold(f32::INFINITY, f32::min)
 }
 
-/// Finds the grasp by sampling the playback every `step` seconds. The site
-/// is the midpoint between the thumb tip and the mean of the fingertips
-/// that have converged on it: those no farther from the thumb than the
-/// nearest one plus one finger width. `None` if no hand is ever tracked.
-pub fn find_grasp(playback: &Playback, step: f64) -> Option<GraspSite> {
-    let mut best: Option<(f32, f64, usize, [Vec3; 5], f32)> = None;
-    let mut widest = 0.0f32;
+/// Where the object goes in a closed hand.
+///
+/// * A power grasp (the tracker reports a grab strength of at least ½, a
+///   fist): between the palm's face and the middle phalanges wrapped
+///   around it, the space a fist encloses.
+/// * A precision grasp: the midpoint between the thumb tip and the mean of
+///   the fingertips that have converged on it (no farther from the thumb
+///   than the nearest one plus one finger width).
+fn grasp_point(hand: &HandSample, tip: &[Vec3; 5], aperture: f32, finger_width: f32) -> Vec3 {
+    let pose = &hand.pose;
+    let palm = &pose.palm;
+    let face = palm.to_world(Vec3::Y * palm.half_extents.y);
+    if hand.grab.is_some_and(|g| g >= 0.5) {
+        let middles = (1..5).map(|f| pose.fingers[f][1].centroid()).sum::<Vec3>() / 4.0;
+        return 0.5 * (face + middles);
+    }
+    let converged: Vec<Vec3> = tip[1..].iter().copied().filter(|t| t.distance(tip[0]) <= aperture + finger_width).collect();
+    let fingers = converged.iter().copied().sum::<Vec3>() / converged.len().max(1) as f32;
+    0.5 * (tip[0] + fingers)
+}
+
+/// Finds every grasp of a recording by sampling it every `step` seconds.
+///
+/// A grasp is a stretch of time during which a hand is at least three
+/// quarters of the way from its widest to its closest aperture (thumb tip
+/// to nearest fingertip). Its site is taken at its most closed instant, by
+/// [`grasp_point`]. Grasps come in time order.
+pub fn find_grasps(playback: &Playback, step: f64) -> Vec<GraspSite> {
     let samples = (playback.duration / step).floor() as usize + 1;
+    let mut out = Vec::new();
     for track in 0..playback.tracks.len() {
-        for i in 0..samples {
-            let t = i as f64 * step;
-            let Some(s) = playback.sample(track, t) else { continue };
-            let tip = tips(&s.pose);
-            let a = aperture(&tip);
-            widest = widest.max(a);
-            if best.is_none_or(|b| a < b.0) {
-                best = Some((a, t, track, tip, 2.0 * s.pose.fingers[1][2].radius));
+        let series: Vec<Option<([Vec3; 5], f32, f32)>> = (0..samples)
+            .map(|i| {
+                playback.sample(track, i as f64 * step).map(|s| {
+                    let tip = tips(&s.pose);
+                    (tip, aperture(&tip), 2.0 * s.pose.fingers[1][2].radius)
+                })
+            })
+            .collect();
+        let apertures = series.iter().flatten().map(|s| s.1);
+        let widest = apertures.clone().fold(0.0f32, f32::max);
+        let closest = apertures.fold(f32::INFINITY, f32::min);
+        if !closest.is_finite() {
+            continue;
+        }
+        let threshold = closest + 0.25 * (widest - closest);
+        let mut i = 0;
+        while i < samples {
+            if !series[i].as_ref().is_some_and(|s| s.1 <= threshold) {
+                i += 1;
+                continue;
             }
+            let start = i;
+            while i < samples && series[i].as_ref().is_some_and(|s| s.1 <= threshold) {
+                i += 1;
+            }
+            let most_closed = (start..i)
+                .filter_map(|k| series[k].map(|s| (k, s)))
+                .min_by(|x, y| x.1.1.total_cmp(&y.1.1));
+            let Some((k, (tip, a, width))) = most_closed else { continue };
+            let Some(hand) = playback.sample(track, k as f64 * step) else { continue };
+            let point = grasp_point(&hand, &tip, a, width);
+            out.push(GraspSite {
+                point,
+                closed_at: k as f64 * step,
+                closing_at: start as f64 * step,
+                open_at: i as f64 * step,
+                aperture_range: (widest, closest),
+                track,
+            });
         }
     }
-    let (closest, closed_at, track, tip, finger_width) = best?;
-    let converged: Vec<Vec3> = tip[1..].iter().copied().filter(|t| t.distance(tip[0]) <= closest + finger_width).collect();
-    let fingers = converged.iter().copied().sum::<Vec3>() / converged.len().max(1) as f32;
-    let threshold = closest + 0.25 * (widest - closest);
-    // Walk back from the most closed instant while the hand stays closed.
-    let closed = |t: f64| playback.sample(track, t).is_some_and(|s| aperture(&tips(&s.pose)) <= threshold);
-    let mut closing_at = closed_at;
-    while closing_at - step >= 0.0 && closed(closing_at - step) {
-        closing_at -= step;
-    }
-    Some(GraspSite {
-        point: 0.5 * (tip[0] + fingers),
-        closed_at,
-        closing_at,
-        aperture_range: (widest, closest),
-        track,
-    })
+    out.sort_by(|a, b| a.closing_at.total_cmp(&b.closing_at));
+    out
 }

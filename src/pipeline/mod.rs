@@ -24,7 +24,7 @@ use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::query;
 use rapier3d::parry::shape::{Cuboid, Segment, Shape};
 use rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
 };
 
 /// Handle of a hand in an [`InteractionWorld`].
@@ -430,6 +430,38 @@ impl InteractionWorld {
         self.objects.get(id.0 as usize).map(|o| o.body)
     }
 
+    /// Holds an object fixed in place (`true`) or lets it move again: a
+    /// fixture, e.g. to keep an object where a recorded hand will close on
+    /// it. A locked object still has contacts and their forces computed;
+    /// they just do not move it.
+    pub fn set_object_locked(&mut self, id: ObjectId, locked: bool) -> Result<(), WorldError> {
+        let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        let kind = if locked { RigidBodyType::Fixed } else { RigidBodyType::Dynamic };
+        if let Some(body) = self.physics.bodies.get_mut(slot.body) {
+            body.set_body_type(kind, true);
+        }
+        Ok(())
+    }
+
+    /// Whether the hand contacts on an object could hold it up, without
+    /// flinging it: some two pressing contacts push from roughly opposite
+    /// sides (normals more than 120° apart), their static friction,
+    /// μ_st·Σ f_n, exceeds the object's weight, and the hand force plus
+    /// gravity would accelerate it by less than g.
+    pub fn is_gripped(&self, id: ObjectId) -> bool {
+        let Some(slot) = self.objects.get(id.0 as usize) else { return false };
+        let pressing: Vec<&Contact> =
+            self.contacts.iter().filter(|c| c.object == id && c.normal_force > 0.0).collect();
+        let opposed = pressing
+            .iter()
+            .enumerate()
+            .any(|(i, a)| pressing[i + 1..].iter().any(|b| a.normal.dot(b.normal) < -0.5));
+        let friction: f32 = pressing.iter().map(|c| c.normal_force).sum::<f32>() * slot.material.skin.static_mu;
+        let weight = slot.mass * self.config.gravity.length();
+        let net = slot.hand_force + slot.mass * self.config.gravity;
+        opposed && friction > weight && net.length() < weight
+    }
+
     /// The current state of an object.
     pub fn object_state(&self, id: ObjectId) -> Result<ObjectState, WorldError> {
         let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
@@ -490,7 +522,7 @@ impl InteractionWorld {
             center_of_mass: body.center_of_mass(),
             gamma: slot.gamma * limit.stiffness,
             damping: damping * limit.damping,
-            max_depth: self.config.force_cap.then(|| friction::MAX_PENETRATION_FRACTION * slot.diameter),
+            max_depth: self.config.force_cap.then_some(friction::MAX_PENETRATION_FRACTION * slot.diameter),
             mu: slot.material.skin,
         }
     }
