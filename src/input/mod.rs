@@ -6,6 +6,7 @@
 
 pub mod convert;
 pub mod grasp;
+pub mod layouts;
 pub mod leap;
 pub mod playback;
 pub mod skeleton;
@@ -34,6 +35,21 @@ pub struct TrackedHand {
     pub grab: Option<f32>,
     /// The tracker's pinch strength in [0, 1], when it reports one.
     pub pinch: Option<f32>,
+}
+
+impl TrackedHand {
+    /// The same hand in another frame and unit (e.g. Leap millimetres to
+    /// world metres).
+    pub fn converted(&self, c: &convert::Conversion) -> TrackedHand {
+        TrackedHand {
+            palm_position: c.point(self.palm_position),
+            palm_normal: c.direction(self.palm_normal),
+            direction: c.direction(self.direction),
+            joints: self.joints.map(|f| f.map(|j| c.point(j))),
+            widths: self.widths.map(|w| c.length(w)),
+            ..self.clone()
+        }
+    }
 }
 
 /// All hands seen at one instant.

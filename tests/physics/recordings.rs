@@ -126,3 +126,38 @@ fn a_box_in_a_fist_is_held_in_each_closing_and_falls_after() {
         assert!(fall > 0.05, "closing {grasp}: fell only {:.1} mm after the fist opened", fall * 1e3);
     }
 }
+
+#[test]
+fn openxr_webxr_and_mediapipe_layouts_round_trip_real_leap_hands() {
+    use coulomb_hands::input::layouts::*;
+    use coulomb_hands::input::skeleton::hand_pose;
+    let mut checked = 0;
+    for name in ["pinch.json.lz", "three-claps.json.lz"] {
+        let rec = leap::load(&data(name)).unwrap();
+        for frame in rec.frames.iter().step_by(40) {
+            for leap_hand in &frame.hands {
+                let hand = leap_hand.converted(&Conversion::mm_to_m());
+                let knuckles = hand.joints[2][0].distance(hand.palm_position);
+                let wrist = hand.palm_position - hand.direction * knuckles;
+                let close = |a: Vec3, b: Vec3| a.distance(b) < 1e-5;
+
+                let xr = from_openxr(hand.id, hand.side, &to_openxr(&hand)).unwrap();
+                assert_eq!(xr.joints, hand.joints, "{name}: OpenXR joints");
+                assert!(xr.widths.iter().zip(&hand.widths).all(|(a, b)| (a - b).abs() < 1e-7));
+                assert!(close(xr.palm_normal, hand.palm_normal) && close(xr.direction, hand.direction));
+
+                let web = from_webxr(hand.id, hand.side, &to_webxr(&hand, wrist)).unwrap();
+                let mp = from_mediapipe(hand.id, hand.side, &to_mediapipe(&hand, wrist)).unwrap();
+                for (layout, h) in [("WebXR", &web), ("MediaPipe", &mp)] {
+                    assert_eq!(h.joints, hand.joints, "{name}: {layout} joints");
+                    // No palm joint: the palm is rebuilt from wrist and
+                    // knuckles, and must face the way Leap's palm faces.
+                    assert!(h.palm_normal.dot(hand.palm_normal) > 0.7, "{name}: {layout} {:?} palm normal {:?} vs {:?}", hand.side, h.palm_normal, hand.palm_normal);
+                    hand_pose(h, &Conversion::identity()).unwrap().validate(0).unwrap();
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 20, "checked {checked} hands");
+}

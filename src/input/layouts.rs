@@ -1,0 +1,267 @@
+//! Other trackers' joint layouts mapped onto the same hand model:
+//! OpenXR `XR_EXT_hand_tracking` (26 joints with radii), WebXR Hand Input
+//! (25 joints with radii) and MediaPipe Hands (21 world landmarks).
+//!
+//! Each maps to a [`TrackedHand`]; [`super::skeleton::hand_pose`] then builds
+//! the 16 bones. The joint → bone mapping, per finger, is
+//!
+//! | our bone | OpenXR / WebXR joints | MediaPipe landmarks |
+//! |---|---|---|
+//! | thumb proximal | thumb metacarpal → thumb proximal | THUMB_CMC → THUMB_MCP |
+//! | thumb intermediate | thumb proximal → thumb distal | THUMB_MCP → THUMB_IP |
+//! | thumb distal | thumb distal → thumb tip | THUMB_IP → THUMB_TIP |
+//! | finger proximal | proximal → intermediate | MCP → PIP |
+//! | finger intermediate | intermediate → distal | PIP → DIP |
+//! | finger distal | distal → tip | DIP → TIP |
+//!
+//! The thumb's first bone is its metacarpal, as in Leap Motion's model (whose
+//! thumb has a zero-length metacarpal and calls that bone "proximal"). The
+//! palm is OpenXR's palm joint; WebXR and MediaPipe have none, so it is the
+//! midpoint of the wrist and the middle finger's knuckle, with its normal
+//! from the knuckle line and the wrist. Finger widths are twice the joint
+//! radius at the knuckle; MediaPipe has no radii, so it uses
+//! [`super::leap::DEFAULT_WIDTHS_MM`] converted to metres.
+//!
+//! All three report metres in a right-handed, y-up frame (OpenXR, WebXR),
+//! except MediaPipe world landmarks, whose y axis points down (image
+//! convention): use [`mediapipe_to_y_up`] to convert them first.
+
+use super::TrackedHand;
+use super::convert::Conversion;
+use crate::hand::Side;
+use glam::{Quat, Vec3};
+
+/// A tracked joint: position (m), orientation and radius (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joint {
+    pub position: Vec3,
+    /// The joint frame: −z along the bone towards the fingertip, +y out of
+    /// the back of the hand (OpenXR and WebXR convention).
+    pub orientation: Quat,
+    pub radius: f32,
+}
+
+/// Why a joint set could not become a hand.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{layout} joint {joint}: {reason}")]
+pub struct LayoutError {
+    pub layout: &'static str,
+    pub joint: usize,
+    pub reason: String,
+}
+
+/// OpenXR `XrHandJointEXT` indices.
+pub mod openxr {
+    pub const PALM: usize = 0;
+    pub const WRIST: usize = 1;
+    /// First joint of each finger (thumb: metacarpal; others: metacarpal).
+    pub const THUMB_METACARPAL: usize = 2;
+    pub const INDEX_METACARPAL: usize = 6;
+    pub const COUNT: usize = 26;
+}
+
+/// WebXR `XRHandJoint` order (no palm joint).
+pub mod webxr {
+    pub const WRIST: usize = 0;
+    pub const THUMB_METACARPAL: usize = 1;
+    pub const INDEX_METACARPAL: usize = 5;
+    pub const COUNT: usize = 25;
+}
+
+/// MediaPipe Hands landmark indices.
+pub mod mediapipe {
+    pub const WRIST: usize = 0;
+    pub const THUMB_CMC: usize = 1;
+    pub const INDEX_MCP: usize = 5;
+    pub const COUNT: usize = 21;
+}
+
+fn check(layout: &'static str, joints: impl Iterator<Item = (Vec3, f32)>) -> Result<(), LayoutError> {
+    for (i, (p, r)) in joints.enumerate() {
+        if !p.is_finite() {
+            return Err(LayoutError { layout, joint: i, reason: format!("position {p:?} is not finite") });
+        }
+        if !(r.is_finite() && r >= 0.0) {
+            return Err(LayoutError { layout, joint: i, reason: format!("radius {r} is not a finite non-negative number") });
+        }
+    }
+    Ok(())
+}
+
+/// The four joints base → tip of each finger, thumb first, given the index
+/// of the thumb's first used joint and of the index finger's metacarpal in
+/// a layout with 4 thumb joints and 5 joints per other finger.
+fn finger_joints(position: impl Fn(usize) -> Vec3, thumb: usize, index_metacarpal: usize) -> [[Vec3; 4]; 5] {
+    std::array::from_fn(|f| {
+        // The thumb uses all four of its joints; other fingers skip their
+        // metacarpal joint (inside the palm).
+        let first = if f == 0 { thumb } else { index_metacarpal + 5 * (f - 1) + 1 };
+        std::array::from_fn(|j| position(first + j))
+    })
+}
+
+/// A palm from the wrist and the knuckles, for layouts without a palm joint.
+/// The normal is oriented to the palm side for the given hand.
+fn palm_from_knuckles(side: Side, wrist: Vec3, joints: &[[Vec3; 4]; 5]) -> (Vec3, Vec3, Vec3) {
+    let knuckle_centre = (joints[1][0] + joints[4][0]) * 0.5;
+    let direction = (joints[2][0] - wrist).normalize_or_zero();
+    let across = joints[4][0] - joints[1][0]; // index → pinky
+    // For a right hand, index→pinky × wrist→fingers points out of the back;
+    // the palm normal is the opposite. Mirrored for a left hand.
+    let back = across.cross(direction).normalize_or_zero();
+    let normal = match side {
+        Side::Right => -back,
+        Side::Left => back,
+    };
+    (0.5 * (wrist + knuckle_centre), normal, direction)
+}
+
+fn tracked(id: i64, side: Side, palm: (Vec3, Vec3, Vec3), joints: [[Vec3; 4]; 5], widths: [f32; 5]) -> TrackedHand {
+    TrackedHand {
+        id,
+        side,
+        palm_position: palm.0,
+        palm_normal: palm.1,
+        direction: palm.2,
+        joints,
+        widths,
+        grab: None,
+        pinch: None,
+    }
+}
+
+/// OpenXR `XR_EXT_hand_tracking` joints (all 26, in `XrHandJointEXT`
+/// order) to a tracked hand in metres.
+pub fn from_openxr(id: i64, side: Side, joints: &[Joint; openxr::COUNT]) -> Result<TrackedHand, LayoutError> {
+    check("openxr", joints.iter().map(|j| (j.position, j.radius)))?;
+    let palm = joints[openxr::PALM];
+    let fingers = finger_joints(|i| joints[i].position, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
+    let widths = std::array::from_fn(|f| {
+        let knuckle = if f == 0 { openxr::THUMB_METACARPAL + 1 } else { openxr::INDEX_METACARPAL + 5 * (f - 1) + 1 };
+        2.0 * joints[knuckle].radius
+    });
+    let normal = (palm.orientation * -Vec3::Y).normalize_or_zero();
+    let direction = (palm.orientation * -Vec3::Z).normalize_or_zero();
+    Ok(tracked(id, side, (palm.position, normal, direction), fingers, widths))
+}
+
+/// WebXR Hand Input joints (all 25, in `XRHandJoint` order) to a tracked
+/// hand in metres.
+pub fn from_webxr(id: i64, side: Side, joints: &[Joint; webxr::COUNT]) -> Result<TrackedHand, LayoutError> {
+    check("webxr", joints.iter().map(|j| (j.position, j.radius)))?;
+    let fingers = finger_joints(|i| joints[i].position, webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL);
+    let widths = std::array::from_fn(|f| {
+        let knuckle = if f == 0 { webxr::THUMB_METACARPAL + 1 } else { webxr::INDEX_METACARPAL + 5 * (f - 1) + 1 };
+        2.0 * joints[knuckle].radius
+    });
+    let palm = palm_from_knuckles(side, joints[webxr::WRIST].position, &fingers);
+    Ok(tracked(id, side, palm, fingers, widths))
+}
+
+/// MediaPipe Hands world landmarks (21, metres, already y-up) to a tracked
+/// hand in metres.
+pub fn from_mediapipe(id: i64, side: Side, landmarks: &[Vec3; mediapipe::COUNT]) -> Result<TrackedHand, LayoutError> {
+    check("mediapipe", landmarks.iter().map(|p| (*p, 0.0)))?;
+    // MediaPipe numbers each finger's 4 landmarks consecutively.
+    let fingers = std::array::from_fn(|f| std::array::from_fn(|j| landmarks[mediapipe::THUMB_CMC + 4 * f + j]));
+    let widths = super::leap::DEFAULT_WIDTHS_MM.map(|w| w * 0.001);
+    let palm = palm_from_knuckles(side, landmarks[mediapipe::WRIST], &fingers);
+    Ok(tracked(id, side, palm, fingers, widths))
+}
+
+/// MediaPipe's world landmarks have y pointing down: flip y and z (a
+/// rotation by 180° about x) to get right-handed, y-up metres.
+pub fn mediapipe_to_y_up() -> Conversion {
+    Conversion::mount_rotation(std::f32::consts::PI, 0.0, 0.0)
+}
+
+/// The joints a tracker in `layout` would report for `hand` (metres),
+/// for tests and for exporting. Joint frames are built from the bones.
+pub fn to_openxr(hand: &TrackedHand) -> [Joint; openxr::COUNT] {
+    let mut out = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; openxr::COUNT];
+    let palm_rot = frame(hand.palm_normal, hand.direction);
+    out[openxr::PALM] = Joint { position: hand.palm_position, orientation: palm_rot, radius: 0.0 };
+    out[openxr::WRIST] = Joint { position: hand.palm_position - hand.direction * 0.05, orientation: palm_rot, radius: 0.0 };
+    fill_fingers(hand, &mut out, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL, palm_rot);
+    out
+}
+
+/// As [`to_openxr`], in WebXR order (no palm joint).
+pub fn to_webxr(hand: &TrackedHand, wrist: Vec3) -> [Joint; webxr::COUNT] {
+    let mut out = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; webxr::COUNT];
+    let palm_rot = frame(hand.palm_normal, hand.direction);
+    out[webxr::WRIST] = Joint { position: wrist, orientation: palm_rot, radius: 0.0 };
+    fill_fingers(hand, &mut out, webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL, palm_rot);
+    out
+}
+
+/// As [`to_openxr`], as MediaPipe's 21 landmarks (y up).
+pub fn to_mediapipe(hand: &TrackedHand, wrist: Vec3) -> [Vec3; mediapipe::COUNT] {
+    let mut out = [Vec3::ZERO; mediapipe::COUNT];
+    out[mediapipe::WRIST] = wrist;
+    for f in 0..5 {
+        for j in 0..4 {
+            out[mediapipe::THUMB_CMC + 4 * f + j] = hand.joints[f][j];
+        }
+    }
+    out
+}
+
+/// A joint frame with −z along `forward` and +y along `-palm_normal`.
+fn frame(palm_normal: Vec3, forward: Vec3) -> Quat {
+    let y = -palm_normal.normalize_or_zero();
+    let z = -(forward - forward.dot(y) * y).normalize_or_zero();
+    let x = y.cross(z);
+    Quat::from_mat3(&glam::Mat3::from_cols(x, y, z)).normalize()
+}
+
+fn fill_fingers(hand: &TrackedHand, out: &mut [Joint], thumb: usize, index_metacarpal: usize, palm_rot: Quat) {
+    for f in 0..5 {
+        let radius = 0.5 * hand.widths[f];
+        let first = if f == 0 { thumb } else { index_metacarpal + 5 * (f - 1) + 1 };
+        if f > 0 {
+            // The metacarpal joint, inside the palm: halfway from the palm.
+            let position = 0.5 * (hand.palm_position + hand.joints[f][0]);
+            out[first - 1] = Joint { position, orientation: palm_rot, radius };
+        }
+        for j in 0..4 {
+            let towards = if j < 3 { hand.joints[f][j + 1] - hand.joints[f][j] } else { hand.joints[f][3] - hand.joints[f][2] };
+            out[first + j] = Joint { position: hand.joints[f][j], orientation: frame(hand.palm_normal, towards), radius };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn index_arithmetic_matches_the_published_orders() {
+        // OpenXR: INDEX_PROXIMAL = 7, MIDDLE_PROXIMAL = 12, LITTLE_TIP = 25.
+        let f = finger_joints(|i| Vec3::splat(i as f32), openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
+        assert_eq!(f[0], [2.0, 3.0, 4.0, 5.0].map(Vec3::splat));
+        assert_eq!(f[1][0], Vec3::splat(7.0));
+        assert_eq!(f[2][0], Vec3::splat(12.0));
+        assert_eq!(f[4][3], Vec3::splat(25.0));
+        // WebXR: thumb 1..=4, index-finger-phalanx-proximal = 6, pinky tip = 24.
+        let w = finger_joints(|i| Vec3::splat(i as f32), webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL);
+        assert_eq!(w[0][0], Vec3::splat(1.0));
+        assert_eq!(w[1][0], Vec3::splat(6.0));
+        assert_eq!(w[4][3], Vec3::splat(24.0));
+    }
+
+    #[test]
+    fn mediapipe_flip_is_a_rotation() {
+        let c = mediapipe_to_y_up();
+        assert!((c.point(Vec3::new(0.1, -0.2, 0.3)) - Vec3::new(0.1, 0.2, -0.3)).length() < 1e-6);
+        assert!(!c.mirrors());
+    }
+
+    #[test]
+    fn bad_joints_name_the_layout_and_joint() {
+        let mut j = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.01 }; openxr::COUNT];
+        j[9].position.x = f32::NAN;
+        let e = from_openxr(0, Side::Right, &j).unwrap_err();
+        assert_eq!((e.layout, e.joint), ("openxr", 9));
+    }
+}
