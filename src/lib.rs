@@ -34,6 +34,7 @@ pub mod object;
 pub mod pipeline;
 pub mod replay;
 pub mod scenes;
+pub mod session;
 
 pub use contact::{Contact, ContactEvent, ContactEventKind};
 pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};

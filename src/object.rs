@@ -16,7 +16,7 @@ impl std::fmt::Display for ObjectId {
 }
 
 /// A collision shape, in the object's local frame (metres).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum ShapeDesc {
     /// A box with the given half extents.
     Box { half_extents: Vec3 },
@@ -30,7 +30,7 @@ pub enum ShapeDesc {
 }
 
 /// One part of a compound shape.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Part {
     pub position: Vec3,
     pub rotation: Quat,
@@ -53,7 +53,7 @@ impl Default for GammaMode {
 }
 
 /// Everything needed to add a dynamic object.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ObjectDesc {
     /// A name for messages and outputs.
     pub name: String,
@@ -197,7 +197,7 @@ impl ObjectDesc {
 }
 
 /// Static scenery: collides with objects through rapier, never with hands.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct StaticDesc {
     pub name: String,
     pub shape: ShapeDesc,

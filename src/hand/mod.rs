@@ -108,7 +108,7 @@ pub enum SkinClass {
 }
 
 /// A phalanx: a capsule around the segment `a → b` (world metres).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Capsule {
     /// The joint nearer the palm.
     pub a: Vec3,
@@ -144,7 +144,7 @@ impl Capsule {
 ///
 /// Its local frame: +y is the palm normal (out of the palm, the grasping
 /// side), +z points from the wrist towards the fingers, x = y × z.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Palm {
     /// Centre of the box.
     pub center: Vec3,
@@ -194,7 +194,7 @@ pub enum BoneShape {
 }
 
 /// One tracking sample of a whole hand, in world metres.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct HandPose {
     pub palm: Palm,
     /// `fingers[finger][phalanx]`, thumb first, proximal first.
