@@ -50,6 +50,18 @@ enum Command {
         #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE)]
         grace: f64,
     },
+    /// Run the physics on a live Leap Motion service's WebSocket stream.
+    Live {
+        /// The service's WebSocket URL.
+        #[arg(long, default_value = coulomb_hands::input::live::DEFAULT_URL)]
+        url: String,
+        /// Stop after this many seconds of tracking time.
+        #[arg(long, default_value_t = 10.0)]
+        seconds: f64,
+        /// Where the desktop device sits in the world, "x,y,z" in metres.
+        #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
+        device: glam::Vec3,
+    },
     /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
     Bench {
         /// Steps to time after warm-up.
@@ -182,6 +194,54 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     Ok(())
 }
 
+fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), ReplayError> {
+    use coulomb_hands::input::{convert::Conversion, live::LiveLeap, skeleton::hand_pose};
+    let conversion = Conversion::leap_desktop(device);
+    let mut stream = LiveLeap::connect(url)?;
+    let (mut world, _) = coulomb_hands::replay::world_with_objects(InteractionConfig::default(), &[])?;
+    let mut hands: Vec<(i64, coulomb_hands::HandId)> = Vec::new();
+    let mut start = None;
+    let mut begun = 0;
+    while let Some(frame) = stream.next_frame()? {
+        let t0 = *start.get_or_insert(frame.timestamp_us);
+        let t = (frame.timestamp_us - t0) as f64 * 1e-6;
+        for (id, hand) in &hands {
+            if !frame.hands.iter().any(|h| h.id == *id) {
+                world.clear_hand_pose(*hand)?;
+            }
+        }
+        for tracked in &frame.hands {
+            let hand = match hands.iter().find(|(id, _)| *id == tracked.id) {
+                Some((_, h)) => *h,
+                None => {
+                    let h = world.add_hand(tracked.side);
+                    hands.push((tracked.id, h));
+                    h
+                }
+            };
+            match hand_pose(tracked, &conversion) {
+                Ok(pose) if pose.validate(0).is_ok() => world.set_hand_pose(hand, &pose)?,
+                _ => world.clear_hand_pose(hand)?,
+            }
+        }
+        while world.time() < t {
+            world.step();
+            begun += world.events().iter().filter(|e| e.kind == coulomb_hands::ContactEventKind::Began).count();
+        }
+        if t >= seconds {
+            break;
+        }
+    }
+    println!(
+        "live {url}: {} frames, {} skipped, {} hands seen, {:.2} s simulated, {begun} contacts begun",
+        stream.frames,
+        stream.skipped,
+        hands.len(),
+        world.time()
+    );
+    Ok(())
+}
+
 fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
     let (mut world, _) = held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
     for _ in 0..100 {
@@ -210,6 +270,7 @@ fn main() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+        Command::Live { url, seconds, device } => live(&url, seconds, device).map_err(|e| e.to_string()),
         Command::Replay { file, trace, json, device, object_at_grasp, gamma, grace } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),

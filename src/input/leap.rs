@@ -169,8 +169,9 @@ fn strength(v: Option<&Value>) -> Option<f32> {
     v.and_then(Value::as_f64).filter(|x| x.is_finite()).map(|x| x.clamp(0.0, 1.0) as f32)
 }
 
-/// One frame object (format 0.1/1, or unpacked format 2).
-fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFrame, InputError> {
+/// One frame object (format 0.1/1, or unpacked format 2, or a live
+/// protocol-v6 frame).
+pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFrame, InputError> {
     let timestamp = f
         .get("timestamp")
         .and_then(Value::as_i64)

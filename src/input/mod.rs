@@ -8,6 +8,7 @@ pub mod convert;
 pub mod grasp;
 pub mod layouts;
 pub mod leap;
+pub mod live;
 pub mod playback;
 pub mod skeleton;
 

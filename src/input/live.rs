@@ -1,0 +1,90 @@
+//! A client for the Leap Motion service's WebSocket JSON stream (protocol
+//! v6 frame objects), feeding the same pipeline as recordings.
+
+use super::{InputError, TrackingFrame, leap};
+use serde_json::Value;
+use std::net::TcpStream;
+use tungstenite::stream::MaybeTlsStream;
+use tungstenite::{Message, WebSocket};
+
+/// Where the Leap Motion service listens by default.
+pub const DEFAULT_URL: &str = "ws://127.0.0.1:6437/v6.json";
+
+/// A live connection to a Leap Motion service.
+pub struct LiveLeap {
+    url: String,
+    socket: WebSocket<MaybeTlsStream<TcpStream>>,
+    /// Frames received and parsed.
+    pub frames: usize,
+    /// Messages that were not valid frames, skipped.
+    pub skipped: usize,
+    /// The last skipped message's error, for diagnostics.
+    pub last_error: Option<InputError>,
+}
+
+impl LiveLeap {
+    /// Connects and asks for frames even when the app is in the background.
+    pub fn connect(url: &str) -> Result<LiveLeap, InputError> {
+        let fail = |reason: String| InputError { source_name: url.to_string(), frame: None, field: "connection".into(), reason };
+        let (mut socket, _) = tungstenite::connect(url).map_err(|e| fail(e.to_string()))?;
+        socket
+            .send(Message::text(r#"{"background": true}"#))
+            .map_err(|e| fail(e.to_string()))?;
+        Ok(LiveLeap { url: url.to_string(), socket, frames: 0, skipped: 0, last_error: None })
+    }
+
+    /// Blocks for the next frame. Messages that are not frames (the
+    /// service's version greeting, events) are passed over; malformed
+    /// frames are skipped and counted. `Ok(None)` when the stream closes.
+    pub fn next_frame(&mut self) -> Result<Option<TrackingFrame>, InputError> {
+        loop {
+            let message = match self.socket.read() {
+                Ok(m) => m,
+                Err(tungstenite::Error::ConnectionClosed | tungstenite::Error::AlreadyClosed) => return Ok(None),
+                Err(e) => {
+                    return Err(InputError {
+                        source_name: self.url.clone(),
+                        frame: Some(self.frames + self.skipped),
+                        field: "connection".into(),
+                        reason: e.to_string(),
+                    });
+                }
+            };
+            let text = match message {
+                Message::Text(t) => t,
+                Message::Close(_) => {
+                    // Send the queued close reply so the service sees a clean close.
+                    let _ = self.socket.flush();
+                    return Ok(None);
+                }
+                _ => continue,
+            };
+            let index = self.frames + self.skipped;
+            let parsed = serde_json::from_str::<Value>(text.as_str())
+                .map_err(|e| InputError {
+                    source_name: self.url.clone(),
+                    frame: Some(index),
+                    field: "json".into(),
+                    reason: e.to_string(),
+                })
+                .and_then(|v| {
+                    if v.get("timestamp").is_none() && (v.get("version").is_some() || v.get("event").is_some()) {
+                        Ok(None)
+                    } else {
+                        leap::frame(&self.url, index, &v).map(Some)
+                    }
+                });
+            match parsed {
+                Ok(Some(frame)) => {
+                    self.frames += 1;
+                    return Ok(Some(frame));
+                }
+                Ok(None) => continue,
+                Err(e) => {
+                    self.skipped += 1;
+                    self.last_error = Some(e);
+                }
+            }
+        }
+    }
+}
