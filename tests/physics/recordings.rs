@@ -161,3 +161,51 @@ fn openxr_webxr_and_mediapipe_layouts_round_trip_real_leap_hands() {
     }
     assert!(checked > 20, "checked {checked} hands");
 }
+
+#[test]
+fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
+    use coulomb_hands::input::TrackingFrame;
+    use coulomb_hands::{ContactEventKind, StaticDesc};
+    // A real hand, resting a finger on a box, is tracked at 100 Hz with two
+    // gaps: 50 ms (under the 100 ms grace) and 300 ms (over it).
+    let rec = leap::load(&data("pinch.json.lz")).unwrap();
+    let hand = rec.frames[0].hands[0].clone();
+    let mut frames = Vec::new();
+    let mut t_us = 0;
+    for i in 0..200 {
+        let t = i * 10_000;
+        let in_gap = (50_000..100_000).contains(&t) || (1_000_000..1_300_000).contains(&t);
+        if !in_gap {
+            frames.push(TrackingFrame { timestamp_us: t, hands: vec![hand.clone()] });
+        }
+        t_us = t;
+    }
+    assert!(t_us > 1_300_000);
+    let playback = Playback::new("gaps", &frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    assert!(playback.sample(0, 0.075).is_some(), "the 50 ms gap is bridged");
+    assert!(playback.sample(0, 1.15).is_none(), "the 300 ms gap is a loss");
+    assert!(playback.sample(0, 1.35).is_some(), "tracked again after it");
+
+    // A box under the index fingertip: the contact must end in the long gap.
+    let tip = playback.sample(0, 0.0).unwrap().pose.fingers[1][2];
+    let centre = tip.b - Vec3::Y * (tip.radius + 0.02 - 0.002);
+    let mut world = coulomb_hands::InteractionWorld::new(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(centre.y - 0.02, 0.5)).unwrap();
+    world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.04), 0.2, centre)).unwrap();
+    let mut ended_in_gap = false;
+    let mut touching_in_short_gap = false;
+    replay::<WorldError>("gaps", &playback, &mut world, &[], |w, line| {
+        if (0.06..0.09).contains(&line.t) {
+            touching_in_short_gap |= !w.contacts().is_empty();
+        }
+        // The last frame before the long gap is at 0.99 s.
+        if line.t > 0.99 && line.t < 1.3 {
+            ended_in_gap |= w.events().iter().any(|e| e.kind == ContactEventKind::Ended);
+            assert!(line.t < 0.995 || w.contacts().is_empty(), "no contacts while the hand is lost");
+        }
+        Ok(())
+    })
+    .unwrap();
+    assert!(touching_in_short_gap, "contacts stay through a bridged gap");
+    assert!(ended_in_gap, "a lost hand releases its contacts");
+}
