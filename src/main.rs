@@ -27,7 +27,7 @@ enum Command {
         #[arg(long, default_value_t = 0.25)]
         every: f32,
     },
-    /// Replay a Leap Motion recording (.json.lz or .json) headlessly.
+    /// Replay a Leap Motion recording (.json.lz or .json), or a recorded session, headlessly.
     Replay {
         /// The recording.
         file: std::path::PathBuf,
@@ -40,6 +40,10 @@ enum Command {
         /// Where the desktop device sits in the world, "x,y,z" in metres.
         #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
         device: glam::Vec3,
+        /// Record the whole session (scene, poses, steps) to this file; replaying
+        /// that file reproduces the run bit for bit.
+        #[arg(long)]
+        record: Option<std::path::PathBuf>,
         /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
         #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
         object_at_grasp: Option<coulomb_hands::replay::GraspObject>,
@@ -133,6 +137,8 @@ enum ReplayError {
     Input(#[from] coulomb_hands::input::InputError),
     #[error(transparent)]
     World(#[from] coulomb_hands::WorldError),
+    #[error(transparent)]
+    Session(#[from] coulomb_hands::session::SessionError),
     #[error("trace: {0}")]
     Trace(#[from] std::io::Error),
 }
@@ -145,15 +151,24 @@ struct ReplayArgs<'a> {
     grace: f64,
     gamma: coulomb_hands::GammaMode,
     object: Option<coulomb_hands::replay::GraspObject>,
+    record: Option<&'a std::path::Path>,
 }
 
 fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
-    use coulomb_hands::replay::{place_at_grasp, replay, world_with_objects, write_trace_line};
-    let ReplayArgs { file, trace, json, device, grace, gamma, object } = args;
+    use coulomb_hands::replay::{place_at_grasp, replay, write_trace_line};
+    let ReplayArgs { file, trace, json, device, grace, gamma, object, record } = args;
+    if std::fs::read_to_string(file).is_ok_and(|t| coulomb_hands::session::Session::sniff(&t)) {
+        return replay_session(file, json);
+    }
     let recording = leap::load(file)?;
     let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(device), grace)?;
-    let (mut world, _) = world_with_objects(InteractionConfig { gamma, ..InteractionConfig::default() }, &[])?;
+    let config = InteractionConfig { gamma, ..InteractionConfig::default() };
+    let mut world = match record {
+        Some(_) => coulomb_hands::InteractionWorld::new_recording(config)?,
+        None => coulomb_hands::InteractionWorld::new(config)?,
+    };
+    world.add_static(&coulomb_hands::StaticDesc::ground(0.0, 0.5))?;
     let mut fixtures = Vec::new();
     let mut site = None;
     if let Some(object) = object {
@@ -173,6 +188,9 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     })?;
     if let Some(mut out) = out {
         std::io::Write::flush(&mut out)?;
+    }
+    if let (Some(path), Some(session)) = (record, world.take_recording()) {
+        session.save(path)?;
     }
     if json {
         println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
@@ -242,6 +260,47 @@ fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), ReplayError> 
     Ok(())
 }
 
+/// Replays a recorded session file and prints what its objects did.
+fn replay_session(file: &std::path::Path, json: bool) -> Result<(), ReplayError> {
+    use coulomb_hands::session::{Session, object_states};
+    let session = Session::load(file)?;
+    let mut start = None;
+    let mut max_speed: Vec<f32> = Vec::new();
+    let world = session.replay(|w| {
+        let states = object_states(w);
+        start.get_or_insert_with(|| states.iter().map(|s| s.position).collect::<Vec<_>>());
+        max_speed.resize(states.len(), 0.0);
+        for (m, s) in max_speed.iter_mut().zip(&states) {
+            *m = m.max(s.linvel.length());
+        }
+    })?;
+    let end = object_states(&world);
+    let start = start.unwrap_or_default();
+    let objects: Vec<serde_json::Value> = end
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            serde_json::json!({
+                "name": world.object_name(coulomb_hands::ObjectId(i as u32)),
+                "displacement": start.get(i).map_or(0.0, |p| (s.position - *p).length()),
+                "max_speed": max_speed.get(i).copied().unwrap_or(0.0),
+                "end": s.position.to_array(),
+            })
+        })
+        .collect();
+    let summary = serde_json::json!({ "session": file.display().to_string(), "steps": session.steps(), "objects": objects });
+    if json {
+        println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
+    } else {
+        println!("replayed session {} ({} steps, {:.2} s)", file.display(), session.steps(), world.time());
+        for o in &objects {
+            let number = |k: &str| o[k].as_f64().unwrap_or(f64::NAN);
+            println!("object {}: moved {:.3} m, max speed {:.3} m/s", o["name"].as_str().unwrap_or(""), number("displacement"), number("max_speed"));
+        }
+    }
+    Ok(())
+}
+
 fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
     let (mut world, _) = held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
     for _ in 0..100 {
@@ -271,7 +330,7 @@ fn main() -> ExitCode {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
         Command::Live { url, seconds, device } => live(&url, seconds, device).map_err(|e| e.to_string()),
-        Command::Replay { file, trace, json, device, object_at_grasp, gamma, grace } => replay(ReplayArgs {
+        Command::Replay { file, trace, json, device, record, object_at_grasp, gamma, grace } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),
             json,
@@ -279,6 +338,7 @@ fn main() -> ExitCode {
             grace,
             gamma,
             object: object_at_grasp,
+            record: record.as_deref(),
         })
         .map_err(|e| e.to_string()),
     };

@@ -1,6 +1,10 @@
-//! Recording a session's input (scene, settings and every step's hand
-//! poses) to a file, and replaying it. Replays are deterministic: the same
-//! file gives bit-identical object trajectories.
+//! Recording a session (every call that builds and drives a world: scene,
+//! hands, poses, fixtures, steps) to a file, and replaying it. Replays are
+//! deterministic: the same file gives bit-identical object trajectories.
+//!
+//! Start one with [`crate::InteractionWorld::new_recording`], take it with
+//! [`crate::InteractionWorld::take_recording`]. Changes made directly
+//! through `physics_mut()` are not recorded.
 
 use crate::hand::{HandPose, Side};
 use crate::object::{ObjectDesc, ObjectId, StaticDesc};
@@ -10,62 +14,66 @@ use std::path::Path;
 /// The file's format marker.
 pub const FORMAT: &str = "coulomb-hands-session/1";
 
-/// Everything needed to reproduce a session.
+/// One recorded call on the world.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Call {
+    AddStatic(StaticDesc),
+    AddObject(ObjectDesc),
+    AddHand(Side),
+    SetHandPose(u32, HandPose),
+    ClearHandPose(u32),
+    SetObjectLocked(u32, bool),
+    Step,
+}
+
+/// A recorded session.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Session {
     /// Always [`FORMAT`].
     pub format: String,
     pub config: InteractionConfig,
-    pub statics: Vec<StaticDesc>,
-    pub objects: Vec<ObjectDesc>,
-    /// One entry per hand, in the order hands were added.
-    pub hands: Vec<Side>,
-    /// Per physics step, per hand: the pose set before the step, or `None`
-    /// when the hand was untracked.
-    pub steps: Vec<Vec<Option<HandPose>>>,
+    /// The calls, in order.
+    pub calls: Vec<Call>,
 }
 
-/// Why a session file could not be read or written.
+/// Why a session file could not be read, written or replayed.
 #[derive(Debug, thiserror::Error)]
 pub enum SessionError {
     #[error("{path}: {reason}")]
     File { path: String, reason: String },
+    #[error("session call {call}: {source}")]
+    Replay { call: usize, source: WorldError },
 }
 
 impl Session {
-    /// A session over a scene, with no steps yet.
-    pub fn new(config: InteractionConfig, statics: Vec<StaticDesc>, objects: Vec<ObjectDesc>, hands: Vec<Side>) -> Self {
-        Session { format: FORMAT.to_string(), config, statics, objects, hands, steps: Vec::new() }
+    pub fn new(config: InteractionConfig) -> Self {
+        Session { format: FORMAT.to_string(), config, calls: Vec::new() }
     }
 
-    /// Builds the session's world: statics, then objects, then hands, so
-    /// ids follow the lists' order.
-    pub fn world(&self) -> Result<(InteractionWorld, Vec<ObjectId>, Vec<HandId>), WorldError> {
-        let mut world = InteractionWorld::new(self.config)?;
-        for s in &self.statics {
-            world.add_static(s)?;
-        }
-        let objects = self.objects.iter().map(|o| world.add_object(o)).collect::<Result<Vec<_>, _>>()?;
-        let hands = self.hands.iter().map(|&side| world.add_hand(side)).collect();
-        Ok((world, objects, hands))
+    /// Number of recorded steps.
+    pub fn steps(&self) -> usize {
+        self.calls.iter().filter(|c| matches!(c, Call::Step)).count()
     }
 
-    /// Sets this step's poses on `world`, steps it, and records the poses.
-    pub fn step(&mut self, world: &mut InteractionWorld, hands: &[HandId], poses: Vec<Option<HandPose>>) -> Result<(), WorldError> {
-        apply(world, hands, &poses)?;
-        world.step();
-        self.steps.push(poses);
-        Ok(())
-    }
-
-    /// Replays every recorded step into a fresh world; `each` sees the
-    /// world after each step. Returns the final world.
-    pub fn replay(&self, mut each: impl FnMut(usize, &InteractionWorld)) -> Result<InteractionWorld, (usize, WorldError)> {
-        let (mut world, _, hands) = self.world().map_err(|e| (0, e))?;
-        for (i, poses) in self.steps.iter().enumerate() {
-            apply(&mut world, &hands, poses).map_err(|e| (i, e))?;
-            world.step();
-            each(i, &world);
+    /// Replays every call into a fresh world; `each` sees the world after
+    /// each step. Returns the final world.
+    pub fn replay(&self, mut each: impl FnMut(&InteractionWorld)) -> Result<InteractionWorld, SessionError> {
+        let mut world = InteractionWorld::new(self.config).map_err(|source| SessionError::Replay { call: 0, source })?;
+        for (i, call) in self.calls.iter().enumerate() {
+            let fail = |source| SessionError::Replay { call: i, source };
+            match call {
+                Call::AddStatic(s) => world.add_static(s).map(drop).map_err(fail)?,
+                Call::AddObject(o) => world.add_object(o).map(drop).map_err(fail)?,
+                Call::AddHand(side) => drop(world.add_hand(*side)),
+                Call::SetHandPose(h, pose) => world.set_hand_pose(HandId(*h), pose).map_err(fail)?,
+                Call::ClearHandPose(h) => world.clear_hand_pose(HandId(*h)).map_err(fail)?,
+                Call::SetObjectLocked(o, locked) => world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?,
+                Call::Step => {
+                    world.step();
+                    each(&world);
+                }
+            }
         }
         Ok(world)
     }
@@ -79,25 +87,18 @@ impl Session {
     pub fn load(path: &Path) -> Result<Session, SessionError> {
         let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
-        let session: Session = serde_json::from_str(&text).map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+        let session: Session =
+            serde_json::from_str(&text).map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
         if session.format != FORMAT {
             return Err(fail(format!("format is \"{}\", expected \"{FORMAT}\"", session.format)));
         }
-        if let Some((i, step)) = session.steps.iter().enumerate().find(|(_, s)| s.len() != session.hands.len()) {
-            return Err(fail(format!("step {i} has {} poses for {} hands", step.len(), session.hands.len())));
-        }
         Ok(session)
     }
-}
 
-fn apply(world: &mut InteractionWorld, hands: &[HandId], poses: &[Option<HandPose>]) -> Result<(), WorldError> {
-    for (hand, pose) in hands.iter().zip(poses) {
-        match pose {
-            Some(p) => world.set_hand_pose(*hand, p)?,
-            None => world.clear_hand_pose(*hand)?,
-        }
+    /// Whether a file looks like a session (by its format marker).
+    pub fn sniff(text: &str) -> bool {
+        text.trim_start().starts_with('{') && text.contains(FORMAT)
     }
-    Ok(())
 }
 
 /// The states of all objects, in id order.

@@ -17,6 +17,7 @@ use crate::contact::{
 use crate::friction::{self, FrictionState, KineticFriction};
 use crate::hand::{Bone, BoneShape, HandPose, PoseError, Side, BONES_PER_HAND};
 use crate::material::Material;
+use crate::session::{Call, Session};
 use crate::object::{GammaMode, ObjectDesc, ObjectError, ObjectId, StaticDesc};
 use glam::Vec3;
 use rapier3d::math::Pose;
@@ -224,6 +225,8 @@ pub struct InteractionWorld {
     events: Vec<ContactEvent>,
     time: f64,
     scratch: Scratch,
+    /// Every call so far, when recording.
+    recording: Option<Session>,
 }
 
 fn contact_key(c: &Contact) -> (HandId, usize, ObjectId) {
@@ -283,7 +286,32 @@ impl InteractionWorld {
             events: Vec::new(),
             time: 0.0,
             scratch: Scratch::default(),
+            recording: None,
         })
+    }
+
+    /// An empty world that records every call made on it (see
+    /// [`crate::session`]).
+    pub fn new_recording(config: InteractionConfig) -> Result<Self, WorldError> {
+        let mut world = Self::new(config)?;
+        world.recording = Some(Session::new(config));
+        Ok(world)
+    }
+
+    /// The session recorded so far, leaving recording on.
+    pub fn recording(&self) -> Option<&Session> {
+        self.recording.as_ref()
+    }
+
+    /// Stops recording and returns the session.
+    pub fn take_recording(&mut self) -> Option<Session> {
+        self.recording.take()
+    }
+
+    fn record(&mut self, call: impl FnOnce() -> Call) {
+        if let Some(session) = self.recording.as_mut() {
+            session.calls.push(call());
+        }
     }
 
     pub fn config(&self) -> &InteractionConfig {
@@ -316,6 +344,7 @@ impl InteractionWorld {
             .position(Pose::from_parts(desc.position, desc.rotation))
             .friction(desc.friction);
         let body = self.physics.insert_body(RigidBodyBuilder::fixed());
+        self.record(|| Call::AddStatic(desc.clone()));
         Ok(self.physics.insert_collider(collider, Some(body)))
     }
 
@@ -372,12 +401,14 @@ impl InteractionWorld {
             mass: desc.mass,
             hand_force: Vec3::ZERO,
         });
+        self.record(|| Call::AddObject(desc.clone()));
         Ok(id)
     }
 
     /// Adds a hand with no pose yet (untracked).
     pub fn add_hand(&mut self, side: Side) -> HandId {
         self.hands.push(HandSlot { side, pose: None, prev: None });
+        self.record(|| Call::AddHand(side));
         HandId(self.hands.len() as u32 - 1)
     }
 
@@ -388,6 +419,7 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         pose.validate(hand.0)?;
         slot.pose = Some(pose.clone());
+        self.record(|| Call::SetHandPose(hand.0, pose.clone()));
         Ok(())
     }
 
@@ -396,6 +428,7 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         slot.pose = None;
         slot.prev = None;
+        self.record(|| Call::ClearHandPose(hand.0));
         Ok(())
     }
 
@@ -440,6 +473,7 @@ impl InteractionWorld {
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
             body.set_body_type(kind, true);
         }
+        self.record(|| Call::SetObjectLocked(id.0, locked));
         Ok(())
     }
 
@@ -496,6 +530,7 @@ impl InteractionWorld {
     /// [`Self::apply_hand_forces`]: gravity and object–object contacts are
     /// the engine's.
     pub fn step_physics(&mut self) {
+        self.record(|| Call::Step);
         self.physics.step();
         self.time += self.config.dt as f64;
         for hand in self.hands.iter_mut() {

@@ -34,24 +34,30 @@ fn replays_are_bit_for_bit_deterministic() {
 #[test]
 fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     use coulomb_hands::session::{Session, object_states};
-    use coulomb_hands::{ObjectDesc, Side, StaticDesc};
+    use coulomb_hands::{InteractionWorld, ObjectDesc, Side, StaticDesc};
     use glam::Vec3;
-    // Record the grasp-lift-carry script through a session.
+    // Record the grasp-lift-carry script, including a fixture on the cube
+    // until the grasp has closed.
     let script = GraspLiftCarry::new(InteractionConfig::default()).unwrap();
-    let mut session = Session::new(
-        InteractionConfig::default(),
-        vec![StaticDesc::ground(-script.half, 0.5)],
-        vec![ObjectDesc::cuboid("cube", Vec3::splat(2.0 * script.half), 0.05, Vec3::ZERO)],
-        vec![Side::Right],
-    );
-    let (mut world, objects, hands) = session.world().unwrap();
+    let mut world = InteractionWorld::new_recording(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(-script.half, 0.5)).unwrap();
+    let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * script.half), 0.05, Vec3::ZERO)).unwrap();
+    let hand = world.add_hand(Side::Right);
+    world.set_object_locked(cube, true).unwrap();
     let dt = world.config().dt;
     let mut live = Vec::new();
     for i in 0..(GraspLiftCarry::OPEN.0 / dt) as usize {
-        session.step(&mut world, &hands, vec![Some(script.hand_pose(i as f32 * dt))]).unwrap();
+        let t = i as f32 * dt;
+        if i == (GraspLiftCarry::CLOSE.1 / dt) as usize {
+            world.set_object_locked(cube, false).unwrap();
+        }
+        world.set_hand_pose(hand, &script.hand_pose(t)).unwrap();
+        world.step();
         live.push(object_states(&world));
     }
-    assert!(world.object_state(objects[0]).unwrap().position.y > 0.15, "the recorded run lifted the cube");
+    assert!(world.object_state(cube).unwrap().position.y > 0.15, "the recorded run lifted the cube");
+    let session = world.take_recording().unwrap();
+    assert_eq!(session.steps(), live.len());
 
     let path = std::env::temp_dir().join(format!("coulomb-hands-session-{}.json", std::process::id()));
     session.save(&path).unwrap();
@@ -60,13 +66,13 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     assert_eq!(loaded, session, "the file round-trips exactly");
 
     let mut replayed = Vec::new();
-    loaded.replay(|_, w| replayed.push(object_states(w))).unwrap();
+    loaded.replay(|w| replayed.push(object_states(w))).unwrap();
     assert_eq!(replayed.len(), live.len());
+    let bits = |s: &coulomb_hands::ObjectState| {
+        (s.position.to_array().map(f32::to_bits), s.rotation.to_array().map(f32::to_bits), s.linvel.to_array().map(f32::to_bits))
+    };
     for (step, (a, b)) in live.iter().zip(&replayed).enumerate() {
         for (x, y) in a.iter().zip(b) {
-            let bits = |s: &coulomb_hands::ObjectState| {
-                (s.position.to_array().map(f32::to_bits), s.rotation.to_array().map(f32::to_bits), s.linvel.to_array().map(f32::to_bits))
-            };
             assert_eq!(bits(x), bits(y), "step {step} differs");
         }
     }
