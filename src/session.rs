@@ -21,7 +21,7 @@ pub enum Call {
     AddStatic(StaticDesc),
     AddObject(ObjectDesc),
     AddHand(Side),
-    SetHandPose(u32, HandPose),
+    SetHandPose(u32, Box<HandPose>),
     ClearHandPose(u32),
     SetObjectLocked(u32, bool),
     Step,

@@ -419,7 +419,7 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         pose.validate(hand.0)?;
         slot.pose = Some(pose.clone());
-        self.record(|| Call::SetHandPose(hand.0, pose.clone()));
+        self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
         Ok(())
     }
 
