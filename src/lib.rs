@@ -33,6 +33,7 @@ pub mod material;
 pub mod object;
 pub mod pipeline;
 pub mod replay;
+pub mod scene;
 pub mod scenes;
 pub mod session;
 

@@ -40,6 +40,10 @@ enum Command {
         /// Where the desktop device sits in the world, "x,y,z" in metres.
         #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
         device: glam::Vec3,
+        /// Add the static scenery and objects of this scene file (JSON; see the
+        /// `scene` module docs).
+        #[arg(long)]
+        scene: Option<std::path::PathBuf>,
         /// Record the whole session (scene, poses, steps) to this file; replaying
         /// that file reproduces the run bit for bit.
         #[arg(long)]
@@ -139,6 +143,8 @@ enum ReplayError {
     World(#[from] coulomb_hands::WorldError),
     #[error(transparent)]
     Session(#[from] coulomb_hands::session::SessionError),
+    #[error(transparent)]
+    Scene(#[from] coulomb_hands::scene::SceneError),
     #[error("trace: {0}")]
     Trace(#[from] std::io::Error),
 }
@@ -152,12 +158,14 @@ struct ReplayArgs<'a> {
     gamma: coulomb_hands::GammaMode,
     object: Option<coulomb_hands::replay::GraspObject>,
     record: Option<&'a std::path::Path>,
+    scene: Option<&'a std::path::Path>,
 }
 
 fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
     use coulomb_hands::replay::{place_at_grasp, replay, write_trace_line};
-    let ReplayArgs { file, trace, json, device, grace, gamma, object, record } = args;
+    let ReplayArgs { file, trace, json, device, grace, gamma, object, record, scene } = args;
+    let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
     if std::fs::read_to_string(file).is_ok_and(|t| coulomb_hands::session::Session::sniff(&t)) {
         return replay_session(file, json);
     }
@@ -169,6 +177,9 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
         None => coulomb_hands::InteractionWorld::new(config)?,
     };
     world.add_static(&coulomb_hands::StaticDesc::ground(0.0, 0.5))?;
+    if let Some(scene) = &scene {
+        scene.add_to(&mut world)?;
+    }
     let mut fixtures = Vec::new();
     let mut site = None;
     if let Some(object) = object {
@@ -330,7 +341,7 @@ fn main() -> ExitCode {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
         Command::Live { url, seconds, device } => live(&url, seconds, device).map_err(|e| e.to_string()),
-        Command::Replay { file, trace, json, device, record, object_at_grasp, gamma, grace } => replay(ReplayArgs {
+        Command::Replay { file, trace, json, device, scene, record, object_at_grasp, gamma, grace } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),
             json,
@@ -339,6 +350,7 @@ fn main() -> ExitCode {
             gamma,
             object: object_at_grasp,
             record: record.as_deref(),
+            scene: scene.as_deref(),
         })
         .map_err(|e| e.to_string()),
     };

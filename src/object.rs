@@ -31,6 +31,7 @@ pub enum ShapeDesc {
 
 /// One part of a compound shape.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Part {
     pub position: Vec3,
     pub rotation: Quat,
@@ -198,6 +199,7 @@ impl ObjectDesc {
 
 /// Static scenery: collides with objects through rapier, never with hands.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StaticDesc {
     pub name: String,
     pub shape: ShapeDesc,

@@ -209,3 +209,25 @@ fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
     assert!(touching_in_short_gap, "contacts stay through a bridged gap");
     assert!(ended_in_gap, "a lost hand releases its contacts");
 }
+
+#[test]
+fn a_scene_file_puts_objects_in_the_replay() {
+    use coulomb_hands::scene::Scene;
+    let scene = Scene::parse(
+        "table.json",
+        r#"{"statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.3, 0.02, 0.3]}},
+                          "position": [0.0, 0.08, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "friction": 0.5}],
+            "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
+                          "mass": 0.05, "material": "wood", "position": [0.0, 0.125, 0.0]}]}"#,
+    )
+    .unwrap();
+    let rec = leap::load(&data("three-claps.json.lz")).unwrap();
+    let playback = Playback::new("claps", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    let (mut world, _) = world_with_objects(InteractionConfig::default(), &[]).unwrap();
+    scene.add_to(&mut world).unwrap();
+    let summary = replay::<WorldError>("claps", &playback, &mut world, &[], |_, _| Ok(())).unwrap();
+    assert_eq!(summary.objects.len(), 1);
+    assert!(summary.all_finite);
+    // The clapping hands sweep through the cube on its table and move it.
+    assert!(summary.contacts_begun > 0 && summary.objects[0].displacement > 0.005, "{summary:?}");
+}

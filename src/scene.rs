@@ -1,0 +1,175 @@
+//! Scene files: static scenery and objects for `replay --scene`, as JSON.
+//!
+//! ```json
+//! {
+//!   "statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.4, 0.02, 0.3]}},
+//!                "position": [0.0, 0.1, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "friction": 0.5}],
+//!   "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
+//!                "mass": 0.05, "material": {"name": "wood", "skin": {"static_mu": 0.46, "dynamic_mu": 0.46},
+//!                "surface_friction": 0.5, "source": "table"},
+//!                "position": [0.0, 0.2, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "gamma": null}]
+//! }
+//! ```
+//!
+//! Shapes are `{"Box": {"half_extents": [x, y, z]}}`, `{"Sphere": {"radius": r}}`,
+//! `{"Capsule": {"half_height": h, "radius": r}}`, `{"Cylinder": {"half_height": h, "radius": r}}`
+//! or `{"Compound": [{"position": [..], "rotation": [..], "shape": {..}}, ..]}`, in metres.
+//! A material may also be given by name alone: `"material": "wood"` (see
+//! [`crate::Material::names`]). Unknown fields are errors.
+
+use crate::material::Material;
+use crate::object::{GammaMode, ObjectDesc, ShapeDesc, StaticDesc};
+use crate::pipeline::{InteractionWorld, WorldError};
+use glam::{Quat, Vec3};
+use std::path::Path;
+
+/// A material by table name, or in full.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(untagged)]
+enum MaterialRef {
+    Named(String),
+    Full(Material),
+}
+
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ObjectEntry {
+    name: String,
+    shape: ShapeDesc,
+    mass: f32,
+    material: MaterialRef,
+    position: Vec3,
+    #[serde(default = "identity")]
+    rotation: Quat,
+    #[serde(default)]
+    gamma: Option<GammaMode>,
+}
+
+fn identity() -> Quat {
+    Quat::IDENTITY
+}
+
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneEntry {
+    #[serde(default)]
+    statics: Vec<StaticDesc>,
+    #[serde(default)]
+    objects: Vec<ObjectEntry>,
+}
+
+/// A loaded scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub statics: Vec<StaticDesc>,
+    pub objects: Vec<ObjectDesc>,
+}
+
+/// Why a scene file was rejected; names the file and where.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}: {reason}")]
+pub struct SceneError {
+    pub file: String,
+    pub reason: String,
+}
+
+impl Scene {
+    /// Reads and checks a scene file: JSON syntax, known fields, material
+    /// names, and every object's and static's values, before anything is
+    /// simulated.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let file = path.display().to_string();
+        let fail = |reason: String| SceneError { file: file.clone(), reason };
+        let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
+        Self::parse(&file, &text)
+    }
+
+    pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
+        let fail = |reason: String| SceneError { file: file.to_string(), reason };
+        let entry: SceneEntry = serde_json::from_str(text)
+            .map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+        let objects = entry
+            .objects
+            .into_iter()
+            .map(|o| {
+                let material = match o.material {
+                    MaterialRef::Full(m) => m,
+                    MaterialRef::Named(n) => Material::named(&n).ok_or_else(|| {
+                        fail(format!(
+                            "object '{}': material: unknown name '{n}' (known: {})",
+                            o.name,
+                            Material::names().collect::<Vec<_>>().join(", ")
+                        ))
+                    })?,
+                };
+                Ok(ObjectDesc {
+                    name: o.name,
+                    shape: o.shape,
+                    mass: o.mass,
+                    material,
+                    position: o.position,
+                    rotation: o.rotation,
+                    gamma: o.gamma,
+                })
+            })
+            .collect::<Result<Vec<_>, SceneError>>()?;
+        let scene = Scene { statics: entry.statics, objects };
+        for o in &scene.objects {
+            o.validate().map_err(|e| fail(e.to_string()))?;
+        }
+        for s in &scene.statics {
+            s.validate().map_err(|e| fail(e.to_string()))?;
+        }
+        Ok(scene)
+    }
+
+    /// Adds the scene to a world.
+    pub fn add_to(&self, world: &mut InteractionWorld) -> Result<(), WorldError> {
+        for s in &self.statics {
+            world.add_static(s)?;
+        }
+        for o in &self.objects {
+            world.add_object(o)?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_a_scene_with_a_named_material() {
+        let scene = Scene::parse(
+            "s.json",
+            r#"{"objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}},
+                 "mass": 0.05, "material": "rubber", "position": [0.0, 0.2, 0.0]}]}"#,
+        )
+        .unwrap();
+        assert_eq!(scene.objects[0].material.skin.static_mu, 0.9);
+        assert_eq!(scene.objects[0].rotation, Quat::IDENTITY);
+    }
+
+    #[test]
+    fn errors_name_the_file_and_the_problem() {
+        let unknown = Scene::parse("s.json", r#"{"objects": [], "lights": []}"#).unwrap_err().to_string();
+        assert!(unknown.starts_with("s.json: line 1") && unknown.contains("lights"), "{unknown}");
+        let bad_mass = Scene::parse(
+            "s.json",
+            r#"{"objects": [{"name": "cube", "shape": {"Sphere": {"radius": 0.02}}, "mass": -1,
+                 "material": "wood", "position": [0.0, 0.2, 0.0]}]}"#,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(bad_mass.contains("s.json") && bad_mass.contains("'cube'") && bad_mass.contains("mass"), "{bad_mass}");
+        let material = Scene::parse(
+            "s.json",
+            r#"{"objects": [{"name": "cube", "shape": {"Sphere": {"radius": 0.02}}, "mass": 1,
+                 "material": "cheese", "position": [0.0, 0.2, 0.0]}]}"#,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(material.contains("unknown name 'cheese'"), "{material}");
+    }
+}
