@@ -11,18 +11,19 @@
 //! use coulomb_hands::{InteractionConfig, InteractionWorld, ObjectDesc, Side, StaticDesc};
 //! use glam::{Quat, Vec3};
 //!
-//! let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
-//! world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-//! let cube = world
-//!     .add_object(&ObjectDesc::cuboid("cube", Vec3::splat(0.05), 0.05, Vec3::new(0.0, 0.025, 0.0)))
-//!     .unwrap();
+//! # fn main() -> Result<(), coulomb_hands::WorldError> {
+//! let mut world = InteractionWorld::new(InteractionConfig::default())?;
+//! world.add_static(&StaticDesc::ground(0.0, 0.5))?;
+//! let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(0.05), 0.05, Vec3::new(0.0, 0.025, 0.0)))?;
 //! let hand = world.add_hand(Side::Right);
 //! let rig = coulomb_hands::hand::rig::HandRig::adult(Side::Right);
 //! let pose = rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [0.0; 5]);
-//! world.set_hand_pose(hand, &pose).unwrap();
+//! world.set_hand_pose(hand, &pose)?;
 //! world.step();
 //! assert!(world.contacts().is_empty()); // the hand is 30 cm above the cube
-//! assert!(world.object_state(cube).unwrap().position.y > 0.0);
+//! assert!(world.object_state(cube)?.position.y > 0.0);
+//! # Ok(())
+//! # }
 //! ```
 
 pub mod contact;

@@ -100,3 +100,25 @@ fn a_fast_bone_pushes_nothing_before_it_touches() {
     assert!(early.is_empty(), "pushed before touching: (gap m, force N) {early:?}");
     assert!(touched, "it did press once through the surface");
 }
+
+#[test]
+fn removing_a_support_drops_what_rested_on_it() {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    let shelf = world.add_static(&StaticDesc::ground(0.3, 0.5)).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.325, 0.0))).unwrap();
+    for _ in 0..200 {
+        world.step();
+    }
+    assert!((position(&world, id).y - 0.325).abs() < 0.002, "rests on the shelf");
+    // An object's own collider is not scenery.
+    let body = world.object_body(id).unwrap();
+    let collider = world.physics().bodies[body].colliders()[0];
+    assert!(!world.remove_static(collider));
+    assert!(world.remove_static(shelf));
+    assert!(!world.remove_static(shelf), "already gone");
+    for _ in 0..1000 {
+        world.step();
+    }
+    assert!((position(&world, id).y - 0.025).abs() < 0.002, "fell to the floor: {}", position(&world, id).y);
+}
