@@ -172,11 +172,7 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     let recording = leap::load(file)?;
     let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(device), grace)?;
     let config = InteractionConfig { gamma, ..InteractionConfig::default() };
-    let mut world = match record {
-        Some(_) => coulomb_hands::InteractionWorld::new_recording(config)?,
-        None => coulomb_hands::InteractionWorld::new(config)?,
-    };
-    world.add_static(&coulomb_hands::StaticDesc::ground(0.0, 0.5))?;
+    let mut world = coulomb_hands::replay::replay_world(config, record.is_some())?;
     if let Some(scene) = &scene {
         scene.add_to(&mut world)?;
     }

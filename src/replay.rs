@@ -69,10 +69,17 @@ pub struct ReplaySummary {
     pub all_finite: bool,
 }
 
+/// A world to replay into, recording its session if `record`: ground at
+/// y = 0.
+pub fn replay_world(config: InteractionConfig, record: bool) -> Result<InteractionWorld, WorldError> {
+    let mut world = if record { InteractionWorld::new_recording(config)? } else { InteractionWorld::new(config)? };
+    world.add_static(&StaticDesc::ground(0.0, 0.5))?;
+    Ok(world)
+}
+
 /// A world to replay into: ground at y = 0 plus the given objects.
 pub fn world_with_objects(config: InteractionConfig, objects: &[ObjectDesc]) -> Result<(InteractionWorld, Vec<ObjectId>), WorldError> {
-    let mut world = InteractionWorld::new(config)?;
-    world.add_static(&StaticDesc::ground(0.0, 0.5))?;
+    let mut world = replay_world(config, false)?;
     let ids = objects.iter().map(|o| world.add_object(o)).collect::<Result<Vec<_>, _>>()?;
     Ok((world, ids))
 }

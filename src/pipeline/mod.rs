@@ -538,16 +538,18 @@ impl InteractionWorld {
         }
     }
 
+    /// An object's contact damping `c` before the stability limit (N·s/m).
+    fn nominal_damping(&self, slot: &ObjectSlot) -> f32 {
+        self.config.damping_ratio.map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z))
+    }
+
     /// The object as the contact law sees it this step, with its contact
     /// stiffness and damping scaled by the stability limit.
     fn object_view(&self, index: usize, limit: StabilityScale) -> ObjectView<'_> {
         let slot = &self.objects[index];
         let body = &self.physics.bodies[slot.body];
         let collider = &self.physics.colliders[slot.collider];
-        let damping = self
-            .config
-            .damping_ratio
-            .map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z));
+        let damping = self.nominal_damping(slot);
         ObjectView {
             id: ObjectId(index as u32),
             pose: *collider.position(),
@@ -582,10 +584,7 @@ impl InteractionWorld {
             let inv_inertia = body.mass_properties().local_mprops.inv_principal_inertia.max_element();
             let r = contact.point - body.center_of_mass();
             let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
-            let damping = self
-                .config
-                .damping_ratio
-                .map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z));
+            let damping = self.nominal_damping(slot);
             sums[o].0 += slot.gamma * w;
             sums[o].1 += damping * w;
         }
