@@ -154,7 +154,8 @@ pub fn place_at_grasp(
 }
 
 /// Replays `playback` into `world` for its whole duration, releasing each
-/// fixture when its object is gripped. Calls `each` after every step with
+/// fixture when its object is gripped, or at its deadline with its contacts
+/// re-seated ([`InteractionWorld::reseat_contacts`]). Calls `each` after every step with
 /// the step's trace line; its error stops the run.
 pub fn replay<E: From<WorldError>>(
     source: &str,
@@ -177,6 +178,9 @@ pub fn replay<E: From<WorldError>>(
             fixtures.iter().partition(|f| f.release_by <= t || world.is_gripped(f.object));
         for f in due {
             world.set_object_locked(f.object, false)?;
+            if !world.is_gripped(f.object) {
+                world.reseat_contacts(f.object)?;
+            }
         }
         fixtures = waiting;
         let mut trace_hands = Vec::new();

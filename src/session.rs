@@ -24,6 +24,7 @@ pub enum Call {
     SetHandPose(u32, Box<HandPose>),
     ClearHandPose(u32),
     SetObjectLocked(u32, bool),
+    ReseatContacts(u32),
     Step,
 }
 
@@ -69,6 +70,7 @@ impl Session {
                 Call::SetHandPose(h, pose) => world.set_hand_pose(HandId(*h), pose).map_err(fail)?,
                 Call::ClearHandPose(h) => world.clear_hand_pose(HandId(*h)).map_err(fail)?,
                 Call::SetObjectLocked(o, locked) => world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?,
+                Call::ReseatContacts(o) => world.reseat_contacts(ObjectId(*o)).map_err(fail)?,
                 Call::Step => {
                     world.step();
                     each(&world);

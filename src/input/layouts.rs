@@ -19,7 +19,9 @@
 //! palm is OpenXR's palm joint; WebXR and MediaPipe have none, so it is the
 //! midpoint of the wrist and the middle finger's knuckle, with its normal
 //! from the knuckle line and the wrist. Finger widths are twice the joint
-//! radius at the knuckle; MediaPipe has no radii, so it uses
+//! radius at the knuckle. OpenXR's and WebXR's index … little metacarpal
+//! joints are the palm's back edge ([`TrackedHand::carps`]); MediaPipe has
+//! none. MediaPipe has no radii, so it uses
 //! [`super::leap::DEFAULT_WIDTHS_MM`] converted to metres.
 //!
 //! All three report metres in a right-handed, y-up frame (OpenXR, WebXR),
@@ -100,6 +102,12 @@ fn finger_joints(position: impl Fn(usize) -> Vec3, thumb: usize, index_metacarpa
     })
 }
 
+/// The metacarpal joints of index … pinky in a layout with 5 joints per
+/// finger.
+fn metacarpals(position: impl Fn(usize) -> Vec3, index_metacarpal: usize) -> [Vec3; 4] {
+    std::array::from_fn(|f| position(index_metacarpal + 5 * f))
+}
+
 /// A palm from the wrist and the knuckles, for layouts without a palm joint.
 /// The normal is oriented to the palm side for the given hand.
 fn palm_from_knuckles(side: Side, wrist: Vec3, joints: &[[Vec3; 4]; 5]) -> (Vec3, Vec3, Vec3) {
@@ -116,7 +124,14 @@ fn palm_from_knuckles(side: Side, wrist: Vec3, joints: &[[Vec3; 4]; 5]) -> (Vec3
     (0.5 * (wrist + knuckle_centre), normal, direction)
 }
 
-fn tracked(id: i64, side: Side, palm: (Vec3, Vec3, Vec3), joints: [[Vec3; 4]; 5], widths: [f32; 5]) -> TrackedHand {
+fn tracked(
+    id: i64,
+    side: Side,
+    palm: (Vec3, Vec3, Vec3),
+    joints: [[Vec3; 4]; 5],
+    carps: Option<[Vec3; 4]>,
+    widths: [f32; 5],
+) -> TrackedHand {
     TrackedHand {
         id,
         side,
@@ -124,6 +139,7 @@ fn tracked(id: i64, side: Side, palm: (Vec3, Vec3, Vec3), joints: [[Vec3; 4]; 5]
         palm_normal: palm.1,
         direction: palm.2,
         joints,
+        carps,
         widths,
         grab: None,
         pinch: None,
@@ -142,7 +158,8 @@ pub fn from_openxr(id: i64, side: Side, joints: &[Joint; openxr::COUNT]) -> Resu
     });
     let normal = (palm.orientation * -Vec3::Y).normalize_or_zero();
     let direction = (palm.orientation * -Vec3::Z).normalize_or_zero();
-    Ok(tracked(id, side, (palm.position, normal, direction), fingers, widths))
+    let carps = metacarpals(|i| joints[i].position, openxr::INDEX_METACARPAL);
+    Ok(tracked(id, side, (palm.position, normal, direction), fingers, Some(carps), widths))
 }
 
 /// WebXR Hand Input joints (all 25, in `XRHandJoint` order) to a tracked
@@ -155,7 +172,8 @@ pub fn from_webxr(id: i64, side: Side, joints: &[Joint; webxr::COUNT]) -> Result
         2.0 * joints[knuckle].radius
     });
     let palm = palm_from_knuckles(side, joints[webxr::WRIST].position, &fingers);
-    Ok(tracked(id, side, palm, fingers, widths))
+    let carps = metacarpals(|i| joints[i].position, webxr::INDEX_METACARPAL);
+    Ok(tracked(id, side, palm, fingers, Some(carps), widths))
 }
 
 /// MediaPipe Hands world landmarks (21, metres, already y-up) to a tracked
@@ -166,7 +184,7 @@ pub fn from_mediapipe(id: i64, side: Side, landmarks: &[Vec3; mediapipe::COUNT])
     let fingers = std::array::from_fn(|f| std::array::from_fn(|j| landmarks[mediapipe::THUMB_CMC + 4 * f + j]));
     let widths = super::leap::DEFAULT_WIDTHS_MM.map(|w| w * 0.001);
     let palm = palm_from_knuckles(side, landmarks[mediapipe::WRIST], &fingers);
-    Ok(tracked(id, side, palm, fingers, widths))
+    Ok(tracked(id, side, palm, fingers, None, widths))
 }
 
 /// MediaPipe's world landmarks have y pointing down: flip y and z (a
@@ -220,8 +238,9 @@ fn fill_fingers(hand: &TrackedHand, out: &mut [Joint], thumb: usize, index_metac
         let radius = 0.5 * hand.widths[f];
         let first = if f == 0 { thumb } else { index_metacarpal + 5 * (f - 1) + 1 };
         if f > 0 {
-            // The metacarpal joint, inside the palm: halfway from the palm.
-            let position = 0.5 * (hand.palm_position + hand.joints[f][0]);
+            // The metacarpal joint, inside the palm: the tracked one, or
+            // else halfway from the palm.
+            let position = hand.carps.map_or(0.5 * (hand.palm_position + hand.joints[f][0]), |c| c[f - 1]);
             out[first - 1] = Joint { position, orientation: palm_rot, radius };
         }
         for j in 0..4 {

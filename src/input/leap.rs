@@ -192,6 +192,7 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
         };
         let mut joints = [[Vec3::ZERO; 4]; 5];
         let mut widths = DEFAULT_WIDTHS_MM;
+        let mut carps: [Option<Vec3>; 4] = [None; 4];
         let mut seen = [false; 5];
         for (p, pointable) in pointables.iter().enumerate() {
             if pointable.get("handId").and_then(Value::as_i64) != Some(id)
@@ -218,6 +219,9 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             for (j, key) in ["mcpPosition", "pipPosition", "dipPosition", tip_key].iter().enumerate() {
                 joints[f][j] = vec3(source, index, &ppath(key), pointable.get(*key))?;
             }
+            if let (Some(carp), 1..) = (pointable.get("carpPosition"), f) {
+                carps[f - 1] = Some(vec3(source, index, &ppath("carpPosition"), Some(carp))?);
+            }
             if let Some(w) = pointable.get("width") {
                 let w = number(source, index, &ppath("width"), Some(w))?;
                 if w <= 0.0 {
@@ -237,6 +241,8 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             palm_normal: unit(source, index, &path("palmNormal"), hand.get("palmNormal"))?,
             direction: unit(source, index, &path("direction"), hand.get("direction"))?,
             joints,
+            // Only a complete set outlines the palm.
+            carps: carps.iter().copied().collect::<Option<Vec<Vec3>>>().and_then(|c| c.try_into().ok()),
             widths,
             grab: strength(hand.get("grabStrength")),
             pinch: strength(hand.get("pinchStrength")),

@@ -30,6 +30,10 @@ pub struct TrackedHand {
     /// `joints[finger]`: thumb first; base of the proximal phalanx, then
     /// the two interphalangeal joints, then the fingertip.
     pub joints: [[Vec3; 4]; 5],
+    /// Wrist ends of the index … pinky metacarpals (Leap `carpPosition`,
+    /// OpenXR/WebXR metacarpal joints), when the tracker reports them: the
+    /// back edge of the palm.
+    pub carps: Option<[Vec3; 4]>,
     /// Finger widths (diameters), thumb first.
     pub widths: [f32; 5],
     /// The tracker's grab strength in [0, 1], when it reports one.
@@ -47,6 +51,7 @@ impl TrackedHand {
             palm_normal: c.direction(self.palm_normal),
             direction: c.direction(self.direction),
             joints: self.joints.map(|f| f.map(|j| c.point(j))),
+            carps: self.carps.map(|carps| carps.map(|j| c.point(j))),
             widths: self.widths.map(|w| c.length(w)),
             ..self.clone()
         }

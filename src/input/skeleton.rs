@@ -19,9 +19,11 @@ pub struct SkeletonError {
 /// * The distal capsule is shortened by its radius, so its rounded end
 ///   reaches the tracked fingertip instead of overshooting it.
 /// * The palm box spans the knuckles: half width from the index–pinky
-///   knuckle spread plus half a finger, half length from the palm centre to
-///   the knuckles, half thickness half a finger width. Its grasping face lies
-///   on the tracked palm position.
+///   knuckle spread plus half a finger, half thickness half a finger width.
+///   Lengthwise it runs from the knuckles back to the wrist ends of the
+///   metacarpals when the tracker gives them ([`TrackedHand::carps`]), else
+///   as far behind the palm centre as the knuckles are ahead of it. Its
+///   grasping face lies in the plane of the tracked palm position.
 pub fn hand_pose(hand: &TrackedHand, conversion: &Conversion) -> Result<HandPose, SkeletonError> {
     let fail = |reason: String| SkeletonError { hand: hand.id, reason };
     let joints: [[Vec3; 4]; 5] = hand.joints.map(|finger| finger.map(|j| conversion.point(j)));
@@ -34,10 +36,19 @@ pub fn hand_pose(hand: &TrackedHand, conversion: &Conversion) -> Result<HandPose
     let mean_radius = radii.iter().sum::<f32>() / 5.0;
     let knuckle_centre = knuckles.iter().copied().sum::<Vec3>() / 4.0;
     let half_width = 0.5 * (knuckles[0] - knuckles[3]).length() + mean_radius;
-    let half_length = (knuckle_centre - palm_position).length().max(mean_radius);
+    // Lengthwise extent along `direction`, relative to the palm position.
+    let front = (knuckle_centre - palm_position).dot(direction);
+    let back = match hand.carps {
+        Some(carps) => {
+            let carp_centre = carps.iter().map(|&c| conversion.point(c)).sum::<Vec3>() / 4.0;
+            (carp_centre - palm_position).dot(direction)
+        }
+        None => -front,
+    };
+    let half_length = (0.5 * (front - back)).max(mean_radius);
     let half_thickness = mean_radius;
     let palm = Palm::from_normal_direction(
-        palm_position - normal * half_thickness,
+        palm_position + direction * (0.5 * (front + back)) - normal * half_thickness,
         normal,
         direction,
         Vec3::new(half_width, half_thickness, half_length),
@@ -93,6 +104,7 @@ mod tests {
             joints: std::array::from_fn(|f| {
                 [-40.0, -80.0, -105.0, -125.0].map(|z| Vec3::new(x(f), 200.0, z))
             }),
+            carps: None,
             widths: [18.0; 5],
             grab: None,
             pinch: None,
@@ -110,6 +122,20 @@ mod tests {
         let face = pose.palm.to_world(Vec3::new(0.0, pose.palm.half_extents.y, 0.0));
         assert!((face - Vec3::new(0.0, 0.2, 0.0)).length() < 1e-5);
         assert!((pose.palm.normal() + Vec3::Y).length() < 1e-5);
+    }
+
+    #[test]
+    fn tracked_metacarpal_bases_set_the_palm_length() {
+        // Knuckles 40 mm ahead of the palm centre (−z), carps 30 mm behind:
+        // a 70 mm palm centred 5 mm ahead, instead of the 80 mm mirror.
+        let mut h = flat_hand();
+        let pose = hand_pose(&h, &Conversion::mm_to_m()).unwrap();
+        assert!((pose.palm.half_extents.z - 0.040).abs() < 1e-6);
+        h.carps = Some(std::array::from_fn(|f| Vec3::new(20.0 * f as f32 - 20.0, 200.0, 30.0)));
+        let pose = hand_pose(&h, &Conversion::mm_to_m()).unwrap();
+        assert!((pose.palm.half_extents.z - 0.035).abs() < 1e-6, "{:?}", pose.palm.half_extents);
+        let face = pose.palm.to_world(Vec3::new(0.0, pose.palm.half_extents.y, 0.0));
+        assert!((face - Vec3::new(0.0, 0.2, -0.005)).length() < 1e-5, "{face:?}");
     }
 
     #[test]

@@ -204,6 +204,9 @@ struct ObjectSlot {
     diameter: f32,
     mass: f32,
     hand_force: Vec3,
+    /// Set when the object is unlocked: its contacts end at the next step
+    /// and begin afresh from the hand's pose then.
+    reseat: bool,
 }
 
 struct HandSlot {
@@ -400,6 +403,7 @@ impl InteractionWorld {
             diameter,
             mass: desc.mass,
             hand_force: Vec3::ZERO,
+            reseat: false,
         });
         self.record(|| Call::AddObject(desc.clone()));
         Ok(id)
@@ -474,6 +478,20 @@ impl InteractionWorld {
             body.set_body_type(kind, true);
         }
         self.record(|| Call::SetObjectLocked(id.0, locked));
+        Ok(())
+    }
+
+    /// Ends the object's contacts at the next step, to begin afresh from
+    /// the bones' pose then (an `Ended` then a `Began` event each).
+    ///
+    /// For a fixture released while the hand is not gripping it: contacts
+    /// formed while bones travelled through an immovable body hold that
+    /// whole sweep in their friction springs and contact points; once the
+    /// object is free, only where the hand is now should push it.
+    pub fn reseat_contacts(&mut self, id: ObjectId) -> Result<(), WorldError> {
+        let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        slot.reseat = true;
+        self.record(|| Call::ReseatContacts(id.0));
         Ok(())
     }
 
@@ -655,6 +673,10 @@ impl InteractionWorld {
         let release = self.config.release_offset;
         let mut live: Vec<(Contact, Option<Proximity>, BoneMotion)> = Vec::with_capacity(self.contacts.len());
         for contact in std::mem::take(&mut self.contacts) {
+            if self.objects[contact.object.0 as usize].reseat {
+                self.push_event(ContactEventKind::Ended, &contact);
+                continue;
+            }
             let Some(motion) = self.motion(contact.hand, contact.bone) else {
                 self.push_event(ContactEventKind::Ended, &contact);
                 continue;
@@ -668,6 +690,10 @@ impl InteractionWorld {
                 Some(prox) => live.push((contact, Some(prox), motion)),
                 None => self.push_event(ContactEventKind::Ended, &contact),
             }
+        }
+
+        for slot in self.objects.iter_mut() {
+            slot.reseat = false;
         }
 
         // 2. New contacts: bones within the contact offset of an object.

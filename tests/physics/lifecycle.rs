@@ -122,3 +122,47 @@ fn removing_a_support_drops_what_rested_on_it() {
     }
     assert!((position(&world, id).y - 0.025).abs() < 0.002, "fell to the floor: {}", position(&world, id).y);
 }
+
+#[test]
+fn a_released_fixture_with_reseated_contacts_is_not_dragged_by_the_sweep_behind_it() {
+    // Gravity off; a finger pressed 2 mm into a locked box's top slides
+    // 2 cm along x, so its contact slips and keeps the kinetic stretch
+    // μ_dyn·f_n/γ ≈ 0.4 · 0.8 N / 400 N/m = 0.8 mm pulling towards +x. The
+    // finger then stops right above the centre (no torque from the normal
+    // push) and the box is unlocked. Kept, that stretch drags the box along
+    // while the push sends it off (measured 3.6 mm); re-seated, the fresh
+    // contact pushes straight down (measured 0.09 mm sideways).
+    let lateral_drift = |reseat: bool| {
+        let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
+        let mut world = InteractionWorld::new(config).unwrap();
+        let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0)).with_material(test_material(0.5));
+        let id = world.add_object(&desc).unwrap();
+        world.set_object_locked(id, true).unwrap();
+        let hand = world.add_hand(Side::Right);
+        let at = |x: f32| {
+            let mut pose = finger_above(-0.002);
+            let bone = &mut pose.fingers[1][2];
+            bone.a.x += x;
+            bone.b.x += x;
+            pose
+        };
+        run(&mut world, hand, 0.5, |t| at(-0.02 + 0.04 * t), |_, _| {});
+        assert_eq!(world.contacts().len(), 1, "still pressing after the slide");
+        assert_eq!(world.contacts()[0].state, FrictionState::Dynamic, "the sweep made it slip");
+        world.set_object_locked(id, false).unwrap();
+        if reseat {
+            world.reseat_contacts(id).unwrap();
+        }
+        let x0 = position(&world, id).x;
+        let mut events = Vec::new();
+        run(&mut world, hand, 0.3, |_| at(0.0), |w, _| events.extend(w.events().iter().map(|e| e.kind)));
+        if reseat {
+            assert_eq!(&events[..2], &[ContactEventKind::Ended, ContactEventKind::Began], "re-seated at once");
+        }
+        position(&world, id).x - x0
+    };
+    let kept = lateral_drift(false);
+    let reseated = lateral_drift(true);
+    assert!(kept > 0.001, "the kept kinetic stretch drags the box {:.2} mm along the sweep", kept * 1e3);
+    assert!(reseated.abs() < 0.0003, "re-seated, only the normal push remains: {:.3} mm sideways", reseated * 1e3);
+}
