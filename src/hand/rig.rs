@@ -17,6 +17,9 @@ pub struct HandRig {
     pub radii: [f32; 5],
     /// Joint angles (rad) of a fully curled finger, per phalanx.
     pub full_curl: [f32; 3],
+    /// The same for the thumb (metacarpal, proximal, distal), which flexes
+    /// less.
+    pub thumb_full_curl: [f32; 3],
 }
 
 impl HandRig {
@@ -34,6 +37,7 @@ impl HandRig {
             ],
             radii: [0.0095, 0.0085, 0.0085, 0.008, 0.007],
             full_curl: [70f32.to_radians(), 95f32.to_radians(), 65f32.to_radians()],
+            thumb_full_curl: [40f32.to_radians(), 50f32.to_radians(), 70f32.to_radians()],
         }
     }
 
@@ -46,15 +50,13 @@ impl HandRig {
     }
 
     /// The base joint of a finger and its rest direction, in palm-local
-    /// coordinates (see [`Palm`] for the frame).
+    /// coordinates (see [`Palm`] for the frame). The thumb's direction is
+    /// that of an abducted thumb, in the palm plane; see [`Self::thumb_direction`].
     pub fn finger_base(&self, finger: Finger) -> (Vec3, Vec3) {
         let m = self.mirror();
         let h = self.palm_half_extents;
         match finger {
-            Finger::Thumb => (
-                Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.2),
-                Vec3::new(-m * 0.6, 0.0, 0.8).normalize(),
-            ),
+            Finger::Thumb => (Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.2), self.thumb_direction(0.0)),
             f => {
                 let slot = f as usize as f32 - 1.0; // 0..3 from index to pinky
                 (Vec3::new(m * h.x * (-0.675 + 0.45 * slot), 0.0, h.z), Vec3::Z)
@@ -62,25 +64,48 @@ impl HandRig {
         }
     }
 
+    /// The thumb's rest direction (palm-local) for `opposition ∈ [0, 1]`:
+    /// 0 abducted in the palm plane, pointing out and forward; 1 swung in
+    /// front of the palm (towards the palm normal and across it), so that
+    /// flexing brings its tip to the fingertips, as in a pinch.
+    pub fn thumb_direction(&self, opposition: f32) -> Vec3 {
+        let m = self.mirror();
+        let abducted = Vec3::new(-m * 0.6, 0.0, 0.8);
+        let opposed = Vec3::new(m * -0.25, 0.35, 0.9).normalize();
+        abducted.lerp(opposed, opposition.clamp(0.0, 1.0)).normalize()
+    }
+
     /// The hand with its palm at `palm_center`, oriented by `rotation`
     /// (local frame of [`Palm`]), and each finger curled by `curl[f] ∈ [0, 1]`
-    /// (0 straight, 1 a fist). Fingers bend towards the palm normal.
+    /// (0 straight, 1 a fist). Fingers bend towards the palm normal; the
+    /// thumb is abducted (see [`Self::pose_opposed`]).
     pub fn pose(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5]) -> HandPose {
+        self.pose_opposed(palm_center, rotation, curl, 0.0)
+    }
+
+    /// As [`Self::pose`], with the thumb swung by `opposition ∈ [0, 1]`
+    /// ([`Self::thumb_direction`]). The abducted thumb flexes towards the
+    /// palm normal; the opposed one across the palm, towards the fingers.
+    pub fn pose_opposed(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32) -> HandPose {
         let palm = Palm { center: palm_center, rotation, half_extents: self.palm_half_extents };
+        let m = self.mirror();
         let joints = std::array::from_fn(|f| {
             let finger = Finger::ALL[f];
-            let (base, dir) = self.finger_base(finger);
+            let (base, mut dir) = self.finger_base(finger);
             let c = curl[f].clamp(0.0, 1.0);
-            // The thumb bends across the palm; the others about local x.
-            let axis = if finger == Finger::Thumb {
-                dir.cross(Vec3::Y).normalize() * -1.0
+            // Each finger bends its direction towards `towards`.
+            let towards = if finger == Finger::Thumb {
+                dir = self.thumb_direction(opposition);
+                Vec3::Y.lerp((Vec3::X * m + Vec3::Y).normalize(), opposition.clamp(0.0, 1.0))
             } else {
-                -Vec3::X
+                Vec3::Y
             };
+            let axis = dir.cross(towards).normalize_or(Vec3::X * -1.0);
             let mut chain = [base; 4];
             let mut angle = 0.0;
+            let full = if finger == Finger::Thumb { self.thumb_full_curl } else { self.full_curl };
             for p in 0..3 {
-                angle += c * self.full_curl[p];
+                angle += c * full[p];
                 let d = Quat::from_axis_angle(axis, angle) * dir;
                 chain[p + 1] = chain[p] + self.lengths[f][p] * d;
             }
@@ -106,8 +131,15 @@ mod tests {
         assert!(tip(&flat).z > 0.1 && tip(&flat).y.abs() < 1e-6);
         // ...and curling moves it to the palm-normal side (+y).
         assert!(tip(&fist).y > 0.02);
-        // The right thumb sits at local −x.
+        // The right thumb sits at local −x, and flexes to the palm side too.
         assert!(flat.fingers[0][0].a.x < 0.0);
+        assert!(fist.fingers[0][2].b.y > 0.02, "thumb tip {:?}", fist.fingers[0][2].b);
+        // Opposed and a little flexed, the thumb tip meets the half-curled
+        // index tip (their radii add to 18 mm) in front of the palm.
+        let pinch = rig.pose_opposed(Vec3::ZERO, Quat::IDENTITY, [0.3, 0.5, 0.5, 0.5, 0.5], 1.0);
+        pinch.validate(0).unwrap();
+        let gap = pinch.fingers[0][2].b.distance(pinch.fingers[1][2].b);
+        assert!(gap < 0.022 && pinch.fingers[0][2].b.y > 0.03, "thumb–index gap {gap}, thumb tip {:?}", pinch.fingers[0][2].b);
         let left = HandRig::adult(Side::Left).pose(Vec3::ZERO, Quat::IDENTITY, [0.0; 5]);
         assert!(left.fingers[0][0].a.x > 0.0);
     }
