@@ -34,6 +34,7 @@ pub mod material;
 pub mod object;
 pub mod pipeline;
 pub mod replay;
+pub mod scenario;
 pub mod scene;
 pub mod scenes;
 pub mod session;

@@ -70,6 +70,21 @@ enum Command {
         #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
         device: glam::Vec3,
     },
+    /// Run a scenario of the interaction catalogue and print its checks.
+    Scenario {
+        /// A shipped scenario's name (e.g. push) or a scenario file.
+        #[arg(required_unless_present = "all", conflicts_with = "all")]
+        scenario: Option<String>,
+        /// Run every shipped scenario and print a pass/fail table.
+        #[arg(long)]
+        all: bool,
+        /// Write one JSON line per physics step to this file (as `replay --trace`).
+        #[arg(long, conflicts_with = "all")]
+        trace: Option<std::path::PathBuf>,
+        /// Print one JSON object: {"scenarios": [{"name", "passed", "checks": [..]}]}.
+        #[arg(long)]
+        json: bool,
+    },
     /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
     Bench {
         /// Steps to time after warm-up.
@@ -331,11 +346,89 @@ fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
     Ok(())
 }
 
+/// Errors of a scenario run, for the CLI.
+#[derive(Debug, thiserror::Error)]
+enum ScenarioRunError {
+    #[error(transparent)]
+    Scenario(#[from] coulomb_hands::scenario::ScenarioError),
+    #[error(transparent)]
+    World(#[from] coulomb_hands::WorldError),
+    #[error("trace: {0}")]
+    Io(#[from] std::io::Error),
+}
+
+/// Runs one scenario or all shipped ones. `Ok(false)` when a check failed.
+fn scenario(name: Option<&str>, all: bool, trace: Option<&std::path::Path>, json: bool) -> Result<bool, ScenarioRunError> {
+    use coulomb_hands::replay::write_trace_line;
+    use coulomb_hands::scenario::{Scenario, shipped};
+    let names: Vec<String> = match name {
+        Some(n) if !all => vec![n.to_string()],
+        _ => shipped().iter().map(|s| s.0.to_string()).collect(),
+    };
+    // Every file is checked before anything runs.
+    let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
+    let mut out = trace.map(|p| std::fs::File::create(p).map(std::io::BufWriter::new)).transpose()?;
+    let bar = if all && !json {
+        let bar = indicatif::ProgressBar::new(scenarios.len() as u64);
+        bar.set_style(indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg} ({elapsed})").expect("valid template"));
+        bar
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let mut reports = Vec::new();
+    let started = Instant::now();
+    for s in &scenarios {
+        bar.set_message(s.name.clone());
+        let t0 = Instant::now();
+        let report = s.run::<ScenarioRunError>(|_, line| {
+            if let Some(out) = out.as_mut() {
+                write_trace_line(out, line)?;
+            }
+            Ok(())
+        })?;
+        reports.push((report, t0.elapsed().as_secs_f64(), s.description.clone()));
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    if let Some(mut out) = out {
+        std::io::Write::flush(&mut out)?;
+    }
+    let passed = reports.iter().all(|r| r.0.passed);
+    if json {
+        let list: Vec<_> = reports.iter().map(|r| &r.0).collect();
+        println!("{}", serde_json::json!({ "scenarios": list }));
+        return Ok(passed);
+    }
+    if all {
+        println!("{:<20} {:<6} {:>7}  failed checks", "scenario", "result", "wall[s]");
+        for (r, wall, _) in &reports {
+            let failed: Vec<&str> = r.checks.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect();
+            println!("{:<20} {:<6} {:>7.2}  {}", r.name, if r.passed { "pass" } else { "FAIL" }, wall, failed.join("; "));
+        }
+        let n = reports.iter().filter(|r| r.0.passed).count();
+        println!("{n}/{} passed in {:.1} s", reports.len(), started.elapsed().as_secs_f64());
+    } else {
+        for (r, wall, description) in &reports {
+            println!("{}: {description}", r.name);
+            for c in &r.checks {
+                println!("  {:<4} {:<40} {:>10.4}  bound {}", if c.passed { "ok" } else { "FAIL" }, c.name, c.value, c.bound);
+            }
+            println!("{} in {wall:.2} s", if r.passed { "passed" } else { "FAILED" });
+        }
+    }
+    Ok(passed)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+        Command::Scenario { scenario: name, all, trace, json } => match scenario(name.as_deref(), all, trace.as_deref(), json) {
+            Ok(true) => Ok(()),
+            Ok(false) => Err("a scenario check failed".into()),
+            Err(e) => Err(e.to_string()),
+        },
         Command::Live { url, seconds, device } => live(&url, seconds, device).map_err(|e| e.to_string()),
         Command::Replay { file, trace, json, device, scene, record, object_at_grasp, gamma, grace } => replay(ReplayArgs {
             file: &file,

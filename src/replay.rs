@@ -21,6 +21,31 @@ pub struct TraceLine {
     pub contacts: usize,
 }
 
+impl TraceLine {
+    /// The line for `world` after a step, with the given hands.
+    pub fn of(world: &InteractionWorld, hands: Vec<TraceHand>) -> TraceLine {
+        let objects = (0..world.object_count() as u32)
+            .filter_map(|o| {
+                let id = ObjectId(o);
+                let s = world.object_state(id).ok()?;
+                Some(TraceObject {
+                    name: world.object_name(id).unwrap_or("").to_string(),
+                    pos: s.position.to_array(),
+                    rot: s.rotation.to_array(),
+                    linvel: s.linvel.to_array(),
+                })
+            })
+            .collect();
+        TraceLine { t: world.time(), hands, objects, contacts: world.contacts().len() }
+    }
+
+    /// Whether every number on the line is finite.
+    pub fn is_finite(&self) -> bool {
+        self.hands.iter().all(|h| h.palm.iter().all(|v| v.is_finite()))
+            && self.objects.iter().all(|o| o.pos.iter().chain(&o.rot).chain(&o.linvel).all(|v| v.is_finite()))
+    }
+}
+
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct TraceHand {
     pub id: i64,
@@ -201,20 +226,11 @@ pub fn replay<E: From<WorldError>>(
         }
         world.step();
         begun += world.events().iter().filter(|e| e.kind == ContactEventKind::Began).count();
-        let mut trace_objects = Vec::with_capacity(objects.len());
-        for (k, &o) in objects.iter().enumerate() {
-            let s = world.object_state(o)?;
-            max_speed[k] = max_speed[k].max(s.linvel.length());
-            all_finite &= s.position.is_finite() && s.rotation.is_finite() && s.linvel.is_finite();
-            trace_objects.push(TraceObject {
-                name: world.object_name(o).unwrap_or("").to_string(),
-                pos: s.position.to_array(),
-                rot: s.rotation.to_array(),
-                linvel: s.linvel.to_array(),
-            });
+        let line = TraceLine::of(world, trace_hands);
+        for (k, o) in line.objects.iter().enumerate() {
+            max_speed[k] = max_speed[k].max(Vec3::from(o.linvel).length());
         }
-        all_finite &= trace_hands.iter().all(|h| h.palm.iter().all(|v| v.is_finite()));
-        let line = TraceLine { t: world.time(), hands: trace_hands, objects: trace_objects, contacts: world.contacts().len() };
+        all_finite &= line.is_finite();
         each(world, &line)?;
     }
     let objects = objects

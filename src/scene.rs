@@ -11,6 +11,10 @@
 //! }
 //! ```
 //!
+//! Optional: `"ground": {"height": 0.0, "friction": 0.5}`, `"gravity": [0.0, -9.81, 0.0]`
+//! and `"towers": [{"base": [x, y, z]}]` (54 blocks each, see
+//! [`crate::scenes::add_tower`]).
+//!
 //! Shapes are `{"Box": {"half_extents": [x, y, z]}}`, `{"Sphere": {"radius": r}}`,
 //! `{"Capsule": {"half_height": h, "radius": r}}`, `{"Cylinder": {"half_height": h, "radius": r}}`
 //! or `{"Compound": [{"position": [..], "rotation": [..], "shape": {..}}, ..]}`, in metres.
@@ -19,7 +23,7 @@
 
 use crate::material::Material;
 use crate::object::{GammaMode, ObjectDesc, ShapeDesc, StaticDesc};
-use crate::pipeline::{InteractionWorld, WorldError};
+use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
 use glam::{Quat, Vec3};
 use std::path::Path;
 
@@ -49,20 +53,47 @@ fn identity() -> Quat {
     Quat::IDENTITY
 }
 
+/// A flat ground whose top face is at `height` (m).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Ground {
+    pub height: f32,
+    /// Object–ground friction coefficient.
+    pub friction: f32,
+}
+
+/// A 54-block tower ([`crate::scenes::add_tower`]) standing on `base`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tower {
+    pub base: Vec3,
+}
+
 #[derive(Debug, Clone, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
-struct SceneEntry {
+pub(crate) struct SceneEntry {
+    #[serde(default)]
+    ground: Option<Ground>,
+    #[serde(default)]
+    gravity: Option<Vec3>,
     #[serde(default)]
     statics: Vec<StaticDesc>,
     #[serde(default)]
     objects: Vec<ObjectEntry>,
+    #[serde(default)]
+    towers: Vec<Tower>,
 }
 
 /// A loaded scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    pub ground: Option<Ground>,
+    /// Overrides the world's gravity (m/s²).
+    pub gravity: Option<Vec3>,
     pub statics: Vec<StaticDesc>,
     pub objects: Vec<ObjectDesc>,
+    /// Towers of blocks named `block{level}-{slot}`, added after `objects`.
+    pub towers: Vec<Tower>,
 }
 
 /// Why a scene file was rejected; names the file and where.
@@ -85,9 +116,14 @@ impl Scene {
     }
 
     pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
-        let fail = |reason: String| SceneError { file: file.to_string(), reason };
         let entry: SceneEntry = serde_json::from_str(text)
-            .map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+            .map_err(|e| SceneError { file: file.to_string(), reason: format!("line {} column {}: {e}", e.line(), e.column()) })?;
+        Self::from_entry(file, entry)
+    }
+
+    /// Checks a parsed scene (`file` names it in errors).
+    pub(crate) fn from_entry(file: &str, entry: SceneEntry) -> Result<Scene, SceneError> {
+        let fail = |reason: String| SceneError { file: file.to_string(), reason };
         let objects = entry
             .objects
             .into_iter()
@@ -113,7 +149,16 @@ impl Scene {
                 })
             })
             .collect::<Result<Vec<_>, SceneError>>()?;
-        let scene = Scene { statics: entry.statics, objects };
+        let scene = Scene { ground: entry.ground, gravity: entry.gravity, statics: entry.statics, objects, towers: entry.towers };
+        if let Some(g) = scene.ground {
+            StaticDesc::ground(g.height, g.friction).validate().map_err(|e| fail(e.to_string()))?;
+        }
+        if let Some(g) = scene.gravity.filter(|g| !g.is_finite()) {
+            return Err(fail(format!("gravity: must be finite, got {g:?}")));
+        }
+        if let Some(t) = scene.towers.iter().find(|t| !t.base.is_finite()) {
+            return Err(fail(format!("towers: base must be finite, got {:?}", t.base)));
+        }
         for o in &scene.objects {
             o.validate().map_err(|e| fail(e.to_string()))?;
         }
@@ -123,15 +168,27 @@ impl Scene {
         Ok(scene)
     }
 
-    /// Adds the scene to a world.
+    /// Adds the scene to a world. Its gravity is part of the world's
+    /// config: see [`Self::config`].
     pub fn add_to(&self, world: &mut InteractionWorld) -> Result<(), WorldError> {
+        if let Some(g) = self.ground {
+            world.add_static(&StaticDesc::ground(g.height, g.friction))?;
+        }
         for s in &self.statics {
             world.add_static(s)?;
         }
         for o in &self.objects {
             world.add_object(o)?;
         }
+        for t in &self.towers {
+            crate::scenes::add_tower(world, t.base)?;
+        }
         Ok(())
+    }
+
+    /// `base` with the scene's gravity, if it sets one.
+    pub fn config(&self, base: InteractionConfig) -> InteractionConfig {
+        InteractionConfig { gravity: self.gravity.unwrap_or(base.gravity), ..base }
     }
 }
 

@@ -38,8 +38,10 @@ impl std::fmt::Display for HandId {
     }
 }
 
-/// Settings of the interaction layer. Units: s, m, N, m/s.
+/// Settings of the interaction layer. Units: s, m, N, m/s. In files, a
+/// missing field takes its default and an unknown one is an error.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
 pub struct InteractionConfig {
     /// Physics time step (s); default 1 ms, the haptic rate. Contact springs
     /// are explicit forces: a longer step is still stable (the stability

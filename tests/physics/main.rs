@@ -7,6 +7,7 @@ mod live;
 mod pinch;
 mod push;
 mod recordings;
+mod scenarios;
 mod safety;
 mod tilt;
 

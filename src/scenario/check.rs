@@ -1,0 +1,266 @@
+//! A scenario's checks: what is measured on the run's history, and the
+//! bound it must meet.
+
+use glam::{Quat, Vec3};
+
+/// One check of a scenario file: a measure and its bound (`min`, `max` or
+/// both), in the measure's unit.
+#[derive(Debug, Clone, PartialEq, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Check {
+    pub name: String,
+    pub measure: Measure,
+    #[serde(default)]
+    pub min: Option<f32>,
+    #[serde(default)]
+    pub max: Option<f32>,
+}
+
+/// What a check measures. Times are seconds from the start; a missing `to`
+/// is the end of the run. Objects are named as in the scene.
+#[derive(Debug, Clone, PartialEq, serde::Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Measure {
+    /// How far the object moved from `from` to `to` (m): along the unit
+    /// `axis` if given (signed), else the distance.
+    Displacement { object: String, from: f32, to: Option<f32>, axis: Option<Vec3> },
+    /// The object's height (y) at `at` (m).
+    Height { object: String, at: f32 },
+    /// The object's lowest height over [`from`, `to`] (m).
+    MinHeight { object: String, from: f32, to: Option<f32> },
+    /// The largest distance of the object from where it was at `from`, in
+    /// the palm frame of hand `hand` (index in the file), over
+    /// [`from`, `to`] (m): how much it moved in the hand.
+    DriftInHand { object: String, hand: usize, from: f32, to: Option<f32> },
+    /// The object's rotation from `from` to `to` (degrees): about the unit
+    /// world `axis` if given (signed, right-handed), else the whole angle.
+    Rotation { object: String, from: f32, to: Option<f32>, axis: Option<Vec3> },
+    /// The angle between the object's local +y axis and world up at `at`
+    /// (degrees).
+    Tilt { object: String, at: f32 },
+    /// The object's speed at `at` (m/s).
+    Speed { object: String, at: f32 },
+    /// The largest displacement from `from` to `to` among the objects whose
+    /// name starts with `prefix`, except those in `except` (m).
+    GroupDisplacement {
+        prefix: String,
+        #[serde(default)]
+        except: Vec<String>,
+        from: f32,
+        to: Option<f32>,
+    },
+    /// The largest horizontal distance of the object's centre from the
+    /// polyline through `path` ([x, z] points, m) over [`from`, `to`] (m).
+    PathDeviation { object: String, path: Vec<[f32; 2]>, from: f32, to: Option<f32> },
+    /// Hand contacts on the object at `at`.
+    Contacts { object: String, at: f32 },
+}
+
+/// What a run recorded, step by step, for the checks.
+#[derive(Debug, Clone, Default)]
+pub struct History {
+    /// Physics step (s).
+    pub dt: f32,
+    pub names: Vec<String>,
+    /// `poses[step][object]` after that step.
+    pub poses: Vec<Vec<(Vec3, Quat)>>,
+    pub speeds: Vec<Vec<f32>>,
+    pub contacts: Vec<Vec<u32>>,
+    /// `palms[step][hand]`: palm centre and rotation, if tracked.
+    pub palms: Vec<Vec<Option<(Vec3, Quat)>>>,
+}
+
+impl History {
+    /// The step whose state is the one at time `t` (clamped to the run).
+    fn step(&self, t: f32) -> usize {
+        ((t / self.dt).round().max(1.0) as usize - 1).min(self.poses.len().saturating_sub(1))
+    }
+
+    fn end(&self) -> f32 {
+        self.poses.len() as f32 * self.dt
+    }
+
+    fn steps(&self, from: f32, to: Option<f32>) -> std::ops::RangeInclusive<usize> {
+        self.step(from)..=self.step(to.unwrap_or(self.end()))
+    }
+}
+
+/// The outcome of one check.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct CheckResult {
+    pub name: String,
+    pub value: f32,
+    /// The bound as text, e.g. `>= 0.05` or `<= 0.01`.
+    pub bound: String,
+    pub passed: bool,
+}
+
+impl Check {
+    /// The objects and hands the check refers to, for validation before a
+    /// run: object names, group prefix, and the hand index.
+    pub(crate) fn references(&self) -> (Vec<&str>, Option<usize>) {
+        match &self.measure {
+            Measure::Displacement { object, .. }
+            | Measure::Height { object, .. }
+            | Measure::MinHeight { object, .. }
+            | Measure::Rotation { object, .. }
+            | Measure::Tilt { object, .. }
+            | Measure::Speed { object, .. }
+            | Measure::PathDeviation { object, .. }
+            | Measure::Contacts { object, .. } => (vec![object.as_str()], None),
+            Measure::DriftInHand { object, hand, .. } => (vec![object.as_str()], Some(*hand)),
+            Measure::GroupDisplacement { except, .. } => (except.iter().map(String::as_str).collect(), None),
+        }
+    }
+
+    /// Checks what can be checked without a run: a bound, finite numbers,
+    /// unit axes, a path of at least two points.
+    pub(crate) fn validate(&self) -> Result<(), String> {
+        if self.min.is_none() && self.max.is_none() {
+            return Err("needs a bound: min, max or both".into());
+        }
+        if self.min.iter().chain(&self.max).any(|b| !b.is_finite()) {
+            return Err("bounds must be finite".into());
+        }
+        let axis = match &self.measure {
+            Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
+            Measure::PathDeviation { path, .. } if path.len() < 2 || path.iter().flatten().any(|v| !v.is_finite()) => {
+                return Err("path: needs at least two finite [x, z] points".into());
+            }
+            _ => None,
+        };
+        match axis {
+            Some(a) if !(a.is_finite() && (a.length() - 1.0).abs() < 1e-3) => Err(format!("axis must be a unit vector, got {a:?}")),
+            _ => Ok(()),
+        }
+    }
+
+    /// Measures the check on a run's history. Objects were validated, so
+    /// lookups by name succeed.
+    pub fn evaluate(&self, h: &History) -> CheckResult {
+        let index = |name: &str| h.names.iter().position(|n| n == name).unwrap_or(0);
+        let pose = |o: usize, t: f32| h.poses[h.step(t)][o];
+        let value = match &self.measure {
+            Measure::Displacement { object, from, to, axis } => {
+                let o = index(object);
+                let d = pose(o, to.unwrap_or(h.end())).0 - pose(o, *from).0;
+                axis.map_or(d.length(), |a| d.dot(a))
+            }
+            Measure::Height { object, at } => pose(index(object), *at).0.y,
+            Measure::MinHeight { object, from, to } => {
+                let o = index(object);
+                h.steps(*from, *to).map(|s| h.poses[s][o].0.y).fold(f32::INFINITY, f32::min)
+            }
+            Measure::DriftInHand { object, hand, from, to } => {
+                let o = index(object);
+                let local = |s: usize| h.palms[s][*hand].map(|(c, r)| r.inverse() * (h.poses[s][o].0 - c));
+                let reference = local(h.step(*from));
+                h.steps(*from, *to)
+                    .map(|s| match (reference, local(s)) {
+                        (Some(a), Some(b)) => a.distance(b),
+                        _ => f32::INFINITY, // the hand was not tracked
+                    })
+                    .fold(0.0, f32::max)
+            }
+            Measure::Rotation { object, from, to, axis } => {
+                let o = index(object);
+                let (a, b) = (pose(o, *from).1, pose(o, to.unwrap_or(h.end())).1);
+                let delta = b * a.inverse();
+                match axis {
+                    None => delta.angle_between(Quat::IDENTITY).to_degrees(),
+                    Some(axis) => {
+                        // Twist about `axis` (swing–twist decomposition).
+                        let v = Vec3::new(delta.x, delta.y, delta.z);
+                        let p = axis * v.dot(*axis);
+                        let twist = Quat::from_xyzw(p.x, p.y, p.z, delta.w).normalize();
+                        let (ax, angle) = twist.to_axis_angle();
+                        let signed = if ax.dot(*axis) < 0.0 { -angle } else { angle };
+                        let wrapped = (signed + std::f32::consts::PI).rem_euclid(std::f32::consts::TAU) - std::f32::consts::PI;
+                        wrapped.to_degrees()
+                    }
+                }
+            }
+            Measure::Tilt { object, at } => (pose(index(object), *at).1 * Vec3::Y).angle_between(Vec3::Y).to_degrees(),
+            Measure::Speed { object, at } => h.speeds[h.step(*at)][index(object)],
+            Measure::GroupDisplacement { prefix, except, from, to } => {
+                let (a, b) = (h.step(*from), h.step(to.unwrap_or(h.end())));
+                h.names
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, n)| n.starts_with(prefix.as_str()) && !except.contains(n))
+                    .map(|(o, _)| h.poses[a][o].0.distance(h.poses[b][o].0))
+                    .fold(0.0, f32::max)
+            }
+            Measure::PathDeviation { object, path, from, to } => {
+                let o = index(object);
+                h.steps(*from, *to).map(|s| distance_to_path(h.poses[s][o].0, path)).fold(0.0, f32::max)
+            }
+            Measure::Contacts { object, at } => h.contacts[h.step(*at)][index(object)] as f32,
+        };
+        let (min_ok, max_ok) = (self.min.is_none_or(|m| value >= m), self.max.is_none_or(|m| value <= m));
+        let bound = match (self.min, self.max) {
+            (Some(a), Some(b)) => format!("{a} ..= {b}"),
+            (Some(a), None) => format!(">= {a}"),
+            (None, Some(b)) => format!("<= {b}"),
+            (None, None) => String::new(),
+        };
+        CheckResult { name: self.name.clone(), value, bound, passed: value.is_finite() && min_ok && max_ok }
+    }
+}
+
+/// Horizontal (x–z) distance from `p` to the polyline through `path`.
+fn distance_to_path(p: Vec3, path: &[[f32; 2]]) -> f32 {
+    let q = glam::Vec2::new(p.x, p.z);
+    path.windows(2)
+        .map(|w| {
+            let (a, b) = (glam::Vec2::from(w[0]), glam::Vec2::from(w[1]));
+            let ab = b - a;
+            let s = ((q - a).dot(ab) / ab.length_squared().max(f32::MIN_POSITIVE)).clamp(0.0, 1.0);
+            q.distance(a + ab * s)
+        })
+        .fold(f32::INFINITY, f32::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn history(positions: &[Vec3], rotations: &[Quat]) -> History {
+        History {
+            dt: 0.5,
+            names: vec!["box".into()],
+            poses: positions.iter().zip(rotations).map(|(p, r)| vec![(*p, *r)]).collect(),
+            speeds: positions.iter().map(|_| vec![0.0]).collect(),
+            contacts: positions.iter().map(|_| vec![0]).collect(),
+            palms: positions.iter().map(|_| vec![Some((Vec3::ZERO, Quat::IDENTITY))]).collect(),
+        }
+    }
+
+    fn check(measure: Measure, min: Option<f32>, max: Option<f32>) -> Check {
+        Check { name: "c".into(), measure, min, max }
+    }
+
+    #[test]
+    fn displacement_rotation_and_path_measures() {
+        let q90 = Quat::from_rotation_y(90f32.to_radians());
+        let h = history(&[Vec3::ZERO, Vec3::new(0.1, 0.0, 0.0), Vec3::new(0.2, 0.0, 0.1)], &[Quat::IDENTITY, Quat::IDENTITY, q90]);
+        let d = check(Measure::Displacement { object: "box".into(), from: 0.5, to: None, axis: Some(Vec3::X) }, Some(0.15), None);
+        let r = d.evaluate(&h);
+        assert!((r.value - 0.2).abs() < 1e-6 && r.passed && r.bound == ">= 0.15", "{r:?}");
+        let spin = check(Measure::Rotation { object: "box".into(), from: 0.5, to: None, axis: Some(-Vec3::Y) }, None, Some(-80.0));
+        let r = spin.evaluate(&h);
+        assert!((r.value + 90.0).abs() < 0.01 && r.passed, "{r:?}");
+        let path = check(Measure::PathDeviation { object: "box".into(), path: vec![[0.0, 0.0], [0.2, 0.0]], from: 0.5, to: None }, None, Some(0.05));
+        let r = path.evaluate(&h);
+        assert!((r.value - 0.1).abs() < 1e-6 && !r.passed, "{r:?}");
+    }
+
+    #[test]
+    fn checks_without_a_bound_or_with_a_bad_axis_are_rejected() {
+        let m = Measure::Height { object: "box".into(), at: 1.0 };
+        assert!(check(m.clone(), None, None).validate().is_err());
+        assert!(check(m, Some(0.0), None).validate().is_ok());
+        let d = Measure::Displacement { object: "box".into(), from: 0.0, to: None, axis: Some(Vec3::new(1.0, 1.0, 0.0)) };
+        assert!(check(d, Some(0.0), None).validate().unwrap_err().contains("unit"));
+    }
+}

@@ -1,0 +1,168 @@
+//! Scripted hands: a few keyframes of palm pose and finger flexion, eased
+//! between, on the parametric [`HandRig`].
+
+use crate::hand::rig::HandRig;
+use crate::hand::{HandPose, Side};
+use crate::scenes::smoothstep;
+use glam::{EulerRot, Quat, Vec3};
+
+/// Flexion of each finger in [0, 1] (0 straight, 1 a fist), thumb first,
+/// or one number for all five.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
+#[serde(untagged)]
+pub enum Curl {
+    All(f32),
+    Each([f32; 5]),
+}
+
+impl Default for Curl {
+    fn default() -> Self {
+        Curl::All(0.0)
+    }
+}
+
+impl Curl {
+    fn each(self) -> [f32; 5] {
+        match self {
+            Curl::All(c) => [c; 5],
+            Curl::Each(c) => c,
+        }
+    }
+}
+
+/// One keyframe.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Key {
+    /// Time (s).
+    pub t: f32,
+    /// Palm centre (world, m).
+    pub palm: Vec3,
+    /// Palm orientation as rotations about the world x, y and z axes, in
+    /// degrees, applied in that order. Zero: palm facing up (+y), fingers
+    /// along +z, a right thumb towards −x.
+    #[serde(default)]
+    pub rotation_deg: Vec3,
+    #[serde(default)]
+    pub curl: Curl,
+    /// Thumb opposition in [0, 1]: 0 abducted in the palm plane, 1 swung in
+    /// front of the palm to meet the fingertips
+    /// ([`HandRig::thumb_direction`]).
+    #[serde(default)]
+    pub opposition: f32,
+}
+
+impl Key {
+    fn rotation(&self) -> Quat {
+        let r = self.rotation_deg * (std::f32::consts::PI / 180.0);
+        // About x first, then y, then z, all world axes: R = Rz·Ry·Rx.
+        Quat::from_euler(EulerRot::ZYX, r.z, r.y, r.x)
+    }
+}
+
+/// A scripted hand: keyframes eased with a smoothstep between each pair,
+/// so the hand starts and stops each segment at rest. Before the first key
+/// and after the last, the hand holds still.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Script {
+    pub rig: HandRig,
+    pub keys: Vec<Key>,
+}
+
+impl Script {
+    /// Checks the keys: at least one, times finite, non-negative and
+    /// increasing, positions and angles finite, flexion and opposition in
+    /// [0, 1]. The error names the key and the field.
+    pub fn new(side: Side, keys: Vec<Key>) -> Result<Script, String> {
+        if keys.is_empty() {
+            return Err("keys: at least one keyframe is needed".into());
+        }
+        let mut previous = f32::NEG_INFINITY;
+        for (i, k) in keys.iter().enumerate() {
+            let at = |field: &str, why: String| Err(format!("keys[{i}].{field}: {why}"));
+            if !(k.t.is_finite() && k.t >= 0.0) {
+                return at("t", format!("must be a finite time ≥ 0 s, got {}", k.t));
+            }
+            if k.t <= previous {
+                return at("t", format!("times must increase, got {} after {previous}", k.t));
+            }
+            previous = k.t;
+            if !k.palm.is_finite() {
+                return at("palm", format!("must be finite, got {:?}", k.palm));
+            }
+            if !k.rotation_deg.is_finite() {
+                return at("rotation_deg", format!("must be finite, got {:?}", k.rotation_deg));
+            }
+            if let Some(c) = k.curl.each().iter().find(|c| !(0.0..=1.0).contains(*c)) {
+                return at("curl", format!("each flexion must be in [0, 1], got {c}"));
+            }
+            if !(0.0..=1.0).contains(&k.opposition) {
+                return at("opposition", format!("must be in [0, 1], got {}", k.opposition));
+            }
+        }
+        Ok(Script { rig: HandRig::adult(side), keys })
+    }
+
+    /// The hand pose at time `t` (s).
+    pub fn pose(&self, t: f32) -> HandPose {
+        let next = self.keys.partition_point(|k| k.t <= t);
+        let (a, b, s) = match next {
+            0 => (&self.keys[0], &self.keys[0], 0.0),
+            n if n == self.keys.len() => (&self.keys[n - 1], &self.keys[n - 1], 0.0),
+            n => {
+                let (a, b) = (&self.keys[n - 1], &self.keys[n]);
+                (a, b, smoothstep(a.t, b.t, t))
+            }
+        };
+        let (ca, cb) = (a.curl.each(), b.curl.each());
+        let curl = std::array::from_fn(|f| ca[f] + (cb[f] - ca[f]) * s);
+        self.rig.pose_opposed(
+            a.palm.lerp(b.palm, s),
+            a.rotation().slerp(b.rotation(), s).normalize(),
+            curl,
+            a.opposition + (b.opposition - a.opposition) * s,
+        )
+    }
+
+    /// When the last key is reached (s).
+    pub fn end(&self) -> f32 {
+        self.keys.last().map_or(0.0, |k| k.t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(t: f32, y: f32, curl: f32) -> Key {
+        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), opposition: 0.0 }
+    }
+
+    #[test]
+    fn eases_between_keys_and_holds_outside_them() {
+        let s = Script::new(Side::Right, vec![key(1.0, 0.1, 0.0), key(2.0, 0.3, 1.0)]).unwrap();
+        assert_eq!(s.pose(0.0).palm.center.y, 0.1);
+        assert!((s.pose(1.5).palm.center.y - 0.2).abs() < 1e-6, "halfway by symmetry");
+        assert!(s.pose(1.1).palm.center.y - 0.1 < 0.2 * 0.1 * 0.5, "slow start (ease in)");
+        assert_eq!(s.pose(3.0).palm.center.y, 0.3);
+        assert_eq!(s.pose(3.0), s.rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [1.0; 5]));
+    }
+
+    #[test]
+    fn rotations_are_about_world_x_then_y_then_z() {
+        let k = Key { rotation_deg: Vec3::new(90.0, 90.0, 0.0), ..key(0.0, 0.0, 0.0) };
+        // +y (palm normal) → +z by Rx(90°) → +x by Ry(90°).
+        assert!((k.rotation() * Vec3::Y - Vec3::X).length() < 1e-6);
+    }
+
+    #[test]
+    fn bad_keys_name_the_key_and_field() {
+        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 0.0), key(0.0, 0.2, 0.0)]).unwrap_err();
+        assert!(e.starts_with("keys[1].t"), "{e}");
+        let e = Script::new(Side::Left, vec![key(0.0, f32::NAN, 0.0)]).unwrap_err();
+        assert!(e.starts_with("keys[0].palm"), "{e}");
+        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 1.5)]).unwrap_err();
+        assert!(e.starts_with("keys[0].curl"), "{e}");
+        assert!(Script::new(Side::Left, vec![]).is_err());
+    }
+}

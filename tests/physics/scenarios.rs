@@ -1,0 +1,58 @@
+//! The shipped scenarios of the interaction catalogue (thesis Ch. 4): each
+//! must pass its own checks, and changing the physics that makes it work
+//! must make it fail.
+
+use coulomb_hands::WorldError;
+use coulomb_hands::scenario::{Scenario, ScenarioReport, shipped};
+use std::path::Path;
+
+fn run(s: &Scenario) -> ScenarioReport {
+    s.run::<WorldError>(|_, line| {
+        assert!(line.is_finite(), "{}: non-finite state at t = {}", s.name, line.t);
+        Ok(())
+    })
+    .unwrap()
+}
+
+fn table(r: &ScenarioReport) -> String {
+    r.checks.iter().map(|c| format!("\n  {} {} = {} (bound {})", if c.passed { "ok" } else { "FAIL" }, c.name, c.value, c.bound)).collect()
+}
+
+#[test]
+fn every_shipped_scenario_passes_its_checks() {
+    let mut failed = Vec::new();
+    for (name, _) in shipped() {
+        let report = run(&Scenario::find(name).unwrap());
+        if !report.passed {
+            failed.push(format!("{name}:{}", table(&report)));
+        }
+    }
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
+
+/// The shipped scenario `name` with `from` replaced by `to` in its file.
+fn variant(name: &str, from: &str, to: &str) -> ScenarioReport {
+    let text = shipped().iter().find(|s| s.0 == name).unwrap().1;
+    assert!(text.contains(from), "{name} has no {from}");
+    run(&Scenario::parse(name, &text.replace(from, to), Path::new(".")).unwrap())
+}
+
+fn check<'a>(r: &'a ScenarioReport, name: &str) -> &'a coulomb_hands::scenario::check::CheckResult {
+    r.checks.iter().find(|c| c.name.starts_with(name)).unwrap()
+}
+
+#[test]
+fn without_the_physics_they_rely_on_the_scenarios_fail() {
+    // A grippy floor: finger friction can no longer drag the box.
+    let pull = variant("pull", r#""friction": 0.0"#, r#""friction": 1.0"#);
+    assert!(!check(&pull, "pulled").passed, "{}", table(&pull));
+    // A slippery floor under the wooden sculpture: it slides, not tips.
+    let tilt = variant("tilt-wooden", r#""friction": 1.0"#, r#""friction": 0.0"#);
+    assert!(!check(&tilt, "tipped").passed, "{}", table(&tilt));
+    // A grippy floor under the slippery push: now it tips.
+    let slide = variant("slide-slippery", r#""friction": 0.05}"#, r#""friction": 1.5}"#);
+    assert!(!slide.passed, "{}", table(&slide));
+    // A hand too soft to hold the falling block: it falls through.
+    let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
+    assert!(!catch.passed, "{}", table(&catch));
+}
