@@ -56,7 +56,7 @@ impl HandRig {
         let m = self.mirror();
         let h = self.palm_half_extents;
         match finger {
-            Finger::Thumb => (Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.2), self.thumb_direction(0.0)),
+            Finger::Thumb => (Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.6), self.thumb_direction(0.0)),
             f => {
                 let slot = f as usize as f32 - 1.0; // 0..3 from index to pinky
                 (Vec3::new(m * h.x * (-0.675 + 0.45 * slot), 0.0, h.z), Vec3::Z)
@@ -134,9 +134,9 @@ mod tests {
         // The right thumb sits at local −x, and flexes to the palm side too.
         assert!(flat.fingers[0][0].a.x < 0.0);
         assert!(fist.fingers[0][2].b.y > 0.02, "thumb tip {:?}", fist.fingers[0][2].b);
-        // Opposed and a little flexed, the thumb tip meets the half-curled
+        // Opposed and a little flexed, the thumb tip meets the curled
         // index tip (their radii add to 18 mm) in front of the palm.
-        let pinch = rig.pose_opposed(Vec3::ZERO, Quat::IDENTITY, [0.3, 0.5, 0.5, 0.5, 0.5], 1.0);
+        let pinch = rig.pose_opposed(Vec3::ZERO, Quat::IDENTITY, [0.3, 0.6, 0.6, 0.6, 0.6], 1.0);
         pinch.validate(0).unwrap();
         let gap = pinch.fingers[0][2].b.distance(pinch.fingers[1][2].b);
         assert!(gap < 0.022 && pinch.fingers[0][2].b.y > 0.03, "thumb–index gap {gap}, thumb tip {:?}", pinch.fingers[0][2].b);

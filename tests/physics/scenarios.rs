@@ -52,6 +52,10 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     // A grippy floor under the slippery push: now it tips.
     let slide = variant("slide-slippery", r#""friction": 0.05}"#, r#""friction": 1.5}"#);
     assert!(!slide.passed, "{}", table(&slide));
+    // A cube too slippery for the pinch's squeeze: it stays on the floor.
+    let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05}, "surface_friction": 0.5, "source": "test"}"#;
+    let grasp = variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
+    assert!(!check(&grasp, "lifted").passed, "{}", table(&grasp));
     // A hand too soft to hold the falling block: it falls through.
     let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
     assert!(!catch.passed, "{}", table(&catch));
