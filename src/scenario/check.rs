@@ -32,6 +32,9 @@ pub enum Measure {
     /// the palm frame of hand `hand` (index in the file), over
     /// [`from`, `to`] (m): how much it moved in the hand.
     DriftInHand { object: String, hand: usize, from: f32, to: Option<f32> },
+    /// The largest angle by which the object turned in the palm frame of
+    /// hand `hand` since `from`, over [`from`, `to`] (degrees).
+    TurnInHand { object: String, hand: usize, from: f32, to: Option<f32> },
     /// The object's rotation from `from` to `to` (degrees): about the unit
     /// world `axis` if given (signed, right-handed), else the whole angle.
     Rotation { object: String, from: f32, to: Option<f32>, axis: Option<Vec3> },
@@ -108,7 +111,9 @@ impl Check {
             | Measure::Speed { object, .. }
             | Measure::PathDeviation { object, .. }
             | Measure::Contacts { object, .. } => (vec![object.as_str()], None),
-            Measure::DriftInHand { object, hand, .. } => (vec![object.as_str()], Some(*hand)),
+            Measure::DriftInHand { object, hand, .. } | Measure::TurnInHand { object, hand, .. } => {
+                (vec![object.as_str()], Some(*hand))
+            }
             Measure::GroupDisplacement { except, .. } => (except.iter().map(String::as_str).collect(), None),
         }
     }
@@ -159,6 +164,17 @@ impl Check {
                     .map(|s| match (reference, local(s)) {
                         (Some(a), Some(b)) => a.distance(b),
                         _ => f32::INFINITY, // the hand was not tracked
+                    })
+                    .fold(0.0, f32::max)
+            }
+            Measure::TurnInHand { object, hand, from, to } => {
+                let o = index(object);
+                let local = |s: usize| h.palms[s][*hand].map(|(_, r)| r.inverse() * h.poses[s][o].1);
+                let reference = local(h.step(*from));
+                h.steps(*from, *to)
+                    .map(|s| match (reference, local(s)) {
+                        (Some(a), Some(b)) => a.angle_between(b).to_degrees(),
+                        _ => f32::INFINITY,
                     })
                     .fold(0.0, f32::max)
             }
