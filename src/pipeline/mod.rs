@@ -78,6 +78,12 @@ pub struct InteractionConfig {
     /// How far above the surface the inverse rays of slipping contacts
     /// start (m).
     pub probe_offset: f32,
+    /// Natural frequency of rapier's soft object–object and object–ground
+    /// contacts (Hz). Stiffer than the step rate collapses stacks, so the
+    /// world uses at most `1/dt`. rapier's 30 Hz default
+    /// lets a 54-block tower sink 28 mm in 2 s; 240 Hz at a 1 ms step,
+    /// 0.6 mm.
+    pub contact_frequency: f32,
 }
 
 impl Default for InteractionConfig {
@@ -94,6 +100,7 @@ impl Default for InteractionConfig {
             force_cap: true,
             max_penetration_speed: Some(1.0),
             probe_offset: 0.004,
+            contact_frequency: 240.0,
         }
     }
 }
@@ -124,6 +131,9 @@ impl InteractionConfig {
         let pos = |v: f32| v.is_finite() && v > 0.0;
         if !pos(self.dt) || self.dt > 0.1 {
             return err("dt", format!("must be in (0, 0.1] s, got {}", self.dt));
+        }
+        if !pos(self.contact_frequency) {
+            return err("contact_frequency", format!("must be a positive number of Hz, got {}", self.contact_frequency));
         }
         if !self.gravity.is_finite() {
             return err("gravity", format!("must be finite, got {:?}", self.gravity));
@@ -282,6 +292,10 @@ impl InteractionWorld {
         let mut physics = PhysicsWorld::new();
         physics.gravity = config.gravity;
         physics.integration_parameters.dt = config.dt;
+        let p = &mut physics.integration_parameters;
+        let frequency = config.contact_frequency.min(1.0 / config.dt);
+        p.contact_softness.natural_frequency = frequency;
+        p.static_contact_softness.natural_frequency = p.static_contact_softness.natural_frequency.max(frequency);
         Ok(InteractionWorld {
             physics,
             config,
