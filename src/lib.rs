@@ -44,4 +44,4 @@ pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};
 pub use hand::{Bone, Capsule, Finger, HandPose, Palm, Phalanx, PoseError, Side};
 pub use material::Material;
 pub use object::{GammaMode, ObjectDesc, ObjectError, ObjectId, ShapeDesc, StaticDesc};
-pub use pipeline::{ConfigError, HandId, InteractionConfig, InteractionWorld, ObjectState, WorldError};
+pub use pipeline::{ConfigError, HandId, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError};

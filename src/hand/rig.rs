@@ -41,6 +41,15 @@ impl HandRig {
         }
     }
 
+    /// The same hand scaled by `k` (lengths, radii and palm): hands come in
+    /// many sizes, e.g. 0.8 for slim fingers that fit a 15 mm slot.
+    pub fn scaled(mut self, k: f32) -> HandRig {
+        self.palm_half_extents *= k;
+        self.lengths = self.lengths.map(|f| f.map(|l| l * k));
+        self.radii = self.radii.map(|r| r * k);
+        self
+    }
+
     /// Mirror factor for the local x axis: the thumb is at −x on a right hand.
     fn mirror(&self) -> f32 {
         match self.side {

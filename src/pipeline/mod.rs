@@ -84,6 +84,20 @@ pub struct InteractionConfig {
     /// lets a 54-block tower sink 28 mm in 2 s; 240 Hz at a 1 ms step,
     /// 0.6 mm.
     pub contact_frequency: f32,
+    /// rapier's friction between objects and with the ground: one Coulomb
+    /// cone per contact point (default), or rapier's faster simplified
+    /// model (one cone per group of 4 points plus a twist constraint),
+    /// which lets a block pushed out of a tower drag the levels above it.
+    pub object_friction: ObjectFriction,
+}
+
+/// How rapier solves friction between objects (not hand contacts, which
+/// are always the thesis's model).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+pub enum ObjectFriction {
+    #[default]
+    Coulomb,
+    Simplified,
 }
 
 impl Default for InteractionConfig {
@@ -101,6 +115,7 @@ impl Default for InteractionConfig {
             max_penetration_speed: Some(1.0),
             probe_offset: 0.004,
             contact_frequency: 240.0,
+            object_friction: ObjectFriction::Coulomb,
         }
     }
 }
@@ -293,6 +308,10 @@ impl InteractionWorld {
         physics.gravity = config.gravity;
         physics.integration_parameters.dt = config.dt;
         let p = &mut physics.integration_parameters;
+        p.friction_model = match config.object_friction {
+            ObjectFriction::Coulomb => rapier3d::dynamics::FrictionModel::Coulomb,
+            ObjectFriction::Simplified => rapier3d::dynamics::FrictionModel::Simplified,
+        };
         let frequency = config.contact_frequency.min(1.0 / config.dt);
         p.contact_softness.natural_frequency = frequency;
         p.static_contact_softness.natural_frequency = p.static_contact_softness.natural_frequency.max(frequency);

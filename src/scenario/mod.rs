@@ -25,7 +25,8 @@
 //!   defaults.
 //! * `hands`: each either scripted, `{"side", "keys": [Key, ..]}` (see
 //!   [`script::Key`]: time, palm centre, palm rotation in degrees, flexion
-//!   per finger, thumb opposition), or a Leap recording,
+//!   per finger, thumb opposition; optional `"scale"` for the hand's size),
+//!   or a Leap recording,
 //!   `{"recording": "path.json.lz", "offset": [x, y, z]}`, whose path is
 //!   relative to the scenario file.
 //! * `checks`: see [`check::Measure`] for what can be measured.
@@ -55,7 +56,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
             &[$(($name, include_str!(concat!("../../scenarios/", $name, ".json")))),*]
         };
     }
-    shipped!["push", "pull", "grasp-lift", "palmar-grasp", "motion-control", "flat-hand-lift", "catch", "slide-slippery", "tilt-wooden"]
+    shipped!["push", "pull", "grasp-lift", "palmar-grasp", "motion-control", "jenga-one-hand", "jenga-two-hands", "flat-hand-lift", "catch", "slide-slippery", "tilt-wooden"]
 }
 
 #[derive(Debug, Clone, serde::Deserialize)]
@@ -83,6 +84,13 @@ struct HandEntry {
     /// Where the recording's device sits in the world (m).
     #[serde(default)]
     offset: Vec3,
+    /// Size of a scripted hand relative to the average adult's (1).
+    #[serde(default = "one")]
+    scale: f32,
+}
+
+fn one() -> f32 {
+    1.0
 }
 
 /// Where a hand's poses come from.
@@ -273,9 +281,15 @@ fn hand_source(h: HandEntry, dir: &Path) -> Result<HandSource, String> {
             if h.offset != Vec3::ZERO {
                 return Err("offset: only for recordings; key palm positions are in world coordinates".into());
             }
-            Script::new(side, h.keys).map(HandSource::Script)
+            if !(h.scale.is_finite() && (0.5..=1.5).contains(&h.scale)) {
+                return Err(format!("scale: must be in [0.5, 1.5] (relative to an average adult hand), got {}", h.scale));
+            }
+            Script::with_rig(crate::hand::rig::HandRig::adult(side).scaled(h.scale), h.keys).map(HandSource::Script)
         }
         (Some(path), true) => {
+            if h.scale != 1.0 {
+                return Err("scale: only for scripted hands; a recording has its own hand size".into());
+            }
             let path = dir.join(path);
             if !h.offset.is_finite() {
                 return Err(format!("offset: must be finite, got {:?}", h.offset));

@@ -74,6 +74,11 @@ impl Script {
     /// increasing, positions and angles finite, flexion and opposition in
     /// [0, 1]. The error names the key and the field.
     pub fn new(side: Side, keys: Vec<Key>) -> Result<Script, String> {
+        Self::with_rig(HandRig::adult(side), keys)
+    }
+
+    /// As [`Self::new`] with a given hand.
+    pub fn with_rig(rig: HandRig, keys: Vec<Key>) -> Result<Script, String> {
         if keys.is_empty() {
             return Err("keys: at least one keyframe is needed".into());
         }
@@ -100,7 +105,7 @@ impl Script {
                 return at("opposition", format!("must be in [0, 1], got {}", k.opposition));
             }
         }
-        Ok(Script { rig: HandRig::adult(side), keys })
+        Ok(Script { rig, keys })
     }
 
     /// The hand pose at time `t` (s).
