@@ -56,6 +56,9 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05}, "surface_friction": 0.5, "source": "test"}"#;
     let grasp = variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
     assert!(!check(&grasp, "lifted").passed, "{}", table(&grasp));
+    // Without the other hand's thumb there is nothing to balance against.
+    let alone = variant("two-hand-balance", r#""curl": [0.5, 1, 1, 1, 1]"#, r#""curl": [0, 1, 1, 1, 1]"#);
+    assert!(!check(&alone, "lifted").passed, "{}", table(&alone));
     // A hand too soft to hold the falling block: it falls through.
     let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
     assert!(!catch.passed, "{}", table(&catch));
