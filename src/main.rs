@@ -85,6 +85,12 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Write the project's generated meshes (U bracket, chess pawn) as OBJ files.
+    Mesh {
+        /// The directory to write them to.
+        #[arg(long, default_value = "assets/meshes")]
+        out: std::path::PathBuf,
+    },
     /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
     Bench {
         /// Steps to time after warm-up.
@@ -419,11 +425,24 @@ fn scenario(name: Option<&str>, all: bool, trace: Option<&std::path::Path>, json
     Ok(passed)
 }
 
+/// Writes `mesh::generate::shipped()` as OBJ files into `out`.
+fn write_meshes(out: &std::path::Path) -> std::io::Result<()> {
+    use coulomb_hands::mesh::generate::{header, shipped};
+    std::fs::create_dir_all(out)?;
+    for (name, mesh) in shipped() {
+        let path = out.join(format!("{name}.obj"));
+        std::fs::write(&path, mesh.to_obj(&header(name)))?;
+        println!("wrote {} ({} triangles)", path.display(), mesh.triangles.len());
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+        Command::Mesh { out } => write_meshes(&out).map_err(|e| e.to_string()),
         Command::Scenario { scenario: name, all, trace, json } => match scenario(name.as_deref(), all, trace.as_deref(), json) {
             Ok(true) => Ok(()),
             Ok(false) => Err("a scenario check failed".into()),

@@ -17,6 +17,7 @@ impl std::fmt::Display for ObjectId {
 
 /// A collision shape, in the object's local frame (metres).
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub enum ShapeDesc {
     /// A box with the given half extents.
     Box { half_extents: Vec3 },
@@ -27,6 +28,77 @@ pub enum ShapeDesc {
     Cylinder { half_height: f32, radius: f32 },
     /// Several convex parts rigidly joined, e.g. an axe's handle and head.
     Compound(Vec<Part>),
+    /// A triangle mesh from a file (§3.7), made into a body as `body` says.
+    Mesh(MeshShape),
+}
+
+/// A mesh shape: the file, its scale, and how it becomes a collider.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshShape {
+    /// The OBJ, STL, glTF or GLB file, relative to the scene file.
+    pub file: String,
+    /// Multiplies the file's coordinates (e.g. 0.001 for millimetres).
+    #[serde(default = "unit_scale")]
+    pub scale: f32,
+    pub body: MeshBody,
+    /// The file's triangles, filled in when a scene is loaded (and kept in
+    /// session files, so a replay needs no mesh files).
+    #[serde(default)]
+    pub mesh: crate::mesh::TriangleMesh,
+}
+
+fn unit_scale() -> f32 {
+    1.0
+}
+
+/// How a mesh becomes a collider.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum MeshBody {
+    /// Boxes of side `size` (m) filling the solid, as the thesis voxelizes
+    /// concave objects; smaller voxels follow the shape more closely and
+    /// cost more contacts queries.
+    Voxels { size: f32 },
+    /// Convex parts by V-HACD; `concavity` (0..1, e.g. 0.01) is the
+    /// largest deviation each part may have from the mesh.
+    ConvexParts { concavity: f32 },
+    /// The exact triangles: only for static scenery, since a triangle mesh
+    /// has no inside to give a dynamic body its mass.
+    TriMesh,
+}
+
+/// At most this many boxes make a voxelized mesh.
+pub const MAX_VOXEL_BOXES: usize = 4096;
+
+impl MeshShape {
+    fn build(&self, object: &str, field: &str) -> Result<SharedShape, ObjectError> {
+        let f = |sub: &str| format!("{field}.Mesh.{sub}");
+        positive(object, &f("scale"), self.scale)?;
+        self.mesh.check().map_err(|e| {
+            let why = if self.mesh.triangles.is_empty() { format!("'{}' is not loaded (load the scene with Scene::load)", self.file) } else { e };
+            ObjectError::new(object, f("file"), why)
+        })?;
+        let mesh = self.mesh.scaled(self.scale);
+        Ok(match self.body {
+            MeshBody::Voxels { size } => {
+                positive(object, &f("body.Voxels.size"), size)?;
+                let boxes = mesh.voxel_boxes(size, MAX_VOXEL_BOXES).map_err(|e| ObjectError::new(object, f("body.Voxels.size"), e))?;
+                SharedShape::compound(
+                    boxes.into_iter().map(|(c, h)| (Pose::from_translation(c), SharedShape::cuboid(h.x, h.y, h.z))).collect(),
+                )
+            }
+            MeshBody::ConvexParts { concavity } => {
+                if !(concavity.is_finite() && concavity > 0.0 && concavity <= 1.0) {
+                    return Err(ObjectError::new(object, f("body.ConvexParts.concavity"), format!("must be in (0, 1], got {concavity}")));
+                }
+                let params = rapier3d::parry::transformation::vhacd::VHACDParameters { concavity, ..Default::default() };
+                SharedShape::convex_decomposition_with_params(&mesh.vertices, &mesh.triangles, &params)
+            }
+            MeshBody::TriMesh => SharedShape::trimesh(mesh.vertices, mesh.triangles)
+                .map_err(|e| ObjectError::new(object, f("file"), format!("not a usable triangle mesh: {e}")))?,
+        })
+    }
 }
 
 /// One part of a compound shape.
@@ -167,8 +239,8 @@ impl ShapeDesc {
                 let mut built = Vec::with_capacity(parts.len());
                 for (i, part) in parts.iter().enumerate() {
                     let f = format!("{field}.parts[{i}]");
-                    if matches!(part.shape, ShapeDesc::Compound(_)) {
-                        return Err(ObjectError::new(object, &f, "compounds cannot be nested"));
+                    if matches!(part.shape, ShapeDesc::Compound(_) | ShapeDesc::Mesh(_)) {
+                        return Err(ObjectError::new(object, &f, "a compound's parts are primitives, not compounds or meshes"));
                     }
                     finite_vec(object, &format!("{f}.position"), part.position)?;
                     unit_quat(object, &format!("{f}.rotation"), part.rotation)?;
@@ -177,6 +249,7 @@ impl ShapeDesc {
                 }
                 SharedShape::compound(built)
             }
+            ShapeDesc::Mesh(mesh) => mesh.build(object, field)?,
         })
     }
 }
@@ -192,6 +265,13 @@ impl ObjectDesc {
         }
         if let Some(GammaMode::Fixed(g)) = self.gamma {
             positive(name, "gamma", g)?;
+        }
+        if let ShapeDesc::Mesh(MeshShape { body: MeshBody::TriMesh, .. }) = self.shape {
+            return Err(ObjectError::new(
+                name,
+                "shape.Mesh.body",
+                "a triangle mesh has no inside, so it can only be static scenery: use Voxels or ConvexParts",
+            ));
         }
         self.shape.build(name, "shape")
     }

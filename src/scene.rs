@@ -11,6 +11,10 @@
 //! }
 //! ```
 //!
+//! A mesh shape loads a file (OBJ, STL, glTF, GLB) relative to the scene file:
+//! `{"Mesh": {"file": "../assets/meshes/pawn.obj", "scale": 1.0, "body": {"Voxels": {"size": 0.004}}}}`,
+//! with body `{"ConvexParts": {"concavity": 0.01}}` or, for statics only, `"TriMesh"`.
+//!
 //! Optional: `"ground": {"height": 0.0, "friction": 0.5}`, `"gravity": [0.0, -9.81, 0.0]`
 //! and `"towers": [{"base": [x, y, z]}]` (54 blocks each, see
 //! [`crate::scenes::add_tower`]).
@@ -112,18 +116,35 @@ impl Scene {
         let file = path.display().to_string();
         let fail = |reason: String| SceneError { file: file.clone(), reason };
         let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
-        Self::parse(&file, &text)
+        Self::parse_in(&file, &text, path.parent().unwrap_or(Path::new(".")))
     }
 
+    /// Parses scene text; mesh files are looked up from the working directory.
     pub fn parse(file: &str, text: &str) -> Result<Scene, SceneError> {
+        Self::parse_in(file, text, Path::new("."))
+    }
+
+    /// Parses scene text whose mesh file paths are relative to `dir`.
+    pub fn parse_in(file: &str, text: &str, dir: &Path) -> Result<Scene, SceneError> {
         let entry: SceneEntry = serde_json::from_str(text)
             .map_err(|e| SceneError { file: file.to_string(), reason: format!("line {} column {}: {e}", e.line(), e.column()) })?;
-        Self::from_entry(file, entry)
+        Self::from_entry(file, entry, dir)
     }
 
-    /// Checks a parsed scene (`file` names it in errors).
-    pub(crate) fn from_entry(file: &str, entry: SceneEntry) -> Result<Scene, SceneError> {
+    /// Checks a parsed scene and loads its mesh files (`file` names it in
+    /// errors; mesh paths are relative to `dir`).
+    pub(crate) fn from_entry(file: &str, mut entry: SceneEntry, dir: &Path) -> Result<Scene, SceneError> {
         let fail = |reason: String| SceneError { file: file.to_string(), reason };
+        let shapes = entry.objects.iter_mut().map(|o| (o.name.clone(), &mut o.shape));
+        let static_shapes = entry.statics.iter_mut().map(|s| (s.name.clone(), &mut s.shape));
+        for (name, shape) in shapes.chain(static_shapes) {
+            if let ShapeDesc::Mesh(m) = shape
+                && m.mesh.triangles.is_empty()
+            {
+                m.mesh = crate::mesh::TriangleMesh::load(&dir.join(&m.file))
+                    .map_err(|e| fail(format!("object '{name}': shape.Mesh.file: {e}")))?;
+            }
+        }
         let objects = entry
             .objects
             .into_iter()
@@ -228,5 +249,29 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(material.contains("unknown name 'cheese'"), "{material}");
+    }
+
+    #[test]
+    fn mesh_files_load_relative_to_the_scene_and_bad_ones_name_the_object() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+        let scene = |file: &str, body: &str| {
+            Scene::parse_in(
+                "s.json",
+                &format!(
+                    r#"{{"objects": [{{"name": "pawn", "mass": 0.03, "material": "wood", "position": [0, 0, 0],
+                        "shape": {{"Mesh": {{"file": "{file}", "body": {body}}}}}}}]}}"#
+                ),
+                &dir,
+            )
+        };
+        let ok = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.003}}"#).unwrap();
+        let ShapeDesc::Mesh(m) = &ok.objects[0].shape else { panic!() };
+        assert!(m.mesh.triangles.len() > 100);
+        let missing = scene("../assets/meshes/rook.obj", r#"{"Voxels": {"size": 0.003}}"#).unwrap_err().to_string();
+        assert!(missing.starts_with("s.json: object 'pawn': shape.Mesh.file: ") && missing.contains("rook.obj"), "{missing}");
+        let tiny = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.00001}}"#).unwrap_err().to_string();
+        assert!(tiny.contains("'pawn'") && tiny.contains("Voxels.size"), "{tiny}");
+        let unknown = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.003, "fill": 1}}"#).unwrap_err().to_string();
+        assert!(unknown.contains("line") && unknown.contains("fill"), "{unknown}");
     }
 }

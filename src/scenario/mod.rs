@@ -175,7 +175,7 @@ impl Scenario {
         if !(entry.duration.is_finite() && entry.duration > 0.0) {
             return Err(fail(format!("duration: must be a positive number of seconds, got {}", entry.duration)));
         }
-        let scene = Scene::from_entry(file, entry.scene).map_err(|e| fail(e.reason))?;
+        let scene = Scene::from_entry(file, entry.scene, dir).map_err(|e| fail(e.reason))?;
         let config = scene.config(entry.config);
         config.validate().map_err(|e| fail(format!("config: {e}")))?;
         let hands = entry

@@ -3,6 +3,7 @@
 
 mod grasp;
 mod lifecycle;
+mod meshes;
 mod live;
 mod pinch;
 mod push;

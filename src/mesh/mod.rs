@@ -1,0 +1,282 @@
+//! Arbitrary object shapes (§3.7): triangle meshes from OBJ, STL and
+//! glTF/GLB files, and how a concave mesh becomes a rigid body.
+//!
+//! A physics engine collides dynamic bodies as convex pieces, so a concave
+//! mesh is either voxelized into boxes at a chosen voxel size (the thesis's
+//! approach) or split into convex parts (V-HACD). Static scenery may stay
+//! an exact triangle mesh. [`generate`] builds the project's own concave
+//! test shapes.
+
+pub mod generate;
+
+use glam::Vec3;
+use std::path::Path;
+
+/// An indexed triangle mesh (metres, counter-clockwise outward faces).
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct TriangleMesh {
+    pub vertices: Vec<Vec3>,
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// Why a mesh file was rejected.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}: {reason}")]
+pub struct MeshError {
+    pub file: String,
+    pub reason: String,
+}
+
+impl TriangleMesh {
+    /// Loads `.obj`, `.stl`, `.gltf` or `.glb` (all meshes of the file, in
+    /// its units), then [`Self::check`]s it.
+    pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
+        let file = path.display().to_string();
+        let fail = |reason: String| MeshError { file: file.clone(), reason };
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).unwrap_or_default();
+        let mesh = match ext.as_str() {
+            "obj" => load_obj(path).map_err(fail)?,
+            "stl" => load_stl(path).map_err(fail)?,
+            "gltf" | "glb" => load_gltf(path).map_err(fail)?,
+            other => return Err(fail(format!("unknown mesh format \".{other}\" (obj, stl, gltf or glb)"))),
+        };
+        mesh.check().map_err(fail)?;
+        Ok(mesh)
+    }
+
+    /// A usable solid: at least one triangle, finite vertices, indices in
+    /// range, and a non-zero volume (not flat along any axis).
+    pub fn check(&self) -> Result<(), String> {
+        if self.triangles.is_empty() {
+            return Err("the mesh has no triangles".into());
+        }
+        if let Some(i) = self.vertices.iter().position(|v| !v.is_finite()) {
+            return Err(format!("vertex {i} is not finite: {:?}", self.vertices[i]));
+        }
+        let n = self.vertices.len() as u32;
+        if let Some(i) = self.triangles.iter().position(|t| t.iter().any(|&k| k >= n)) {
+            return Err(format!("triangle {i} refers to a vertex beyond the {n} there are"));
+        }
+        let (lo, hi) = self.bounds();
+        let size = hi - lo;
+        if size.min_element() <= 1e-6 * size.max_element().max(f32::MIN_POSITIVE) {
+            return Err(format!("the mesh has no volume: it is flat ({size:?} across)"));
+        }
+        Ok(())
+    }
+
+    /// Axis-aligned bounds (min, max).
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        let lo = self.vertices.iter().copied().fold(Vec3::splat(f32::INFINITY), Vec3::min);
+        let hi = self.vertices.iter().copied().fold(Vec3::splat(f32::NEG_INFINITY), Vec3::max);
+        (lo, hi)
+    }
+
+    /// The same mesh scaled about the origin.
+    pub fn scaled(&self, k: f32) -> TriangleMesh {
+        TriangleMesh { vertices: self.vertices.iter().map(|v| *v * k).collect(), triangles: self.triangles.clone() }
+    }
+
+    /// Wavefront OBJ text of the mesh (1-based indices).
+    pub fn to_obj(&self, comment: &str) -> String {
+        let mut out = String::new();
+        for line in comment.lines() {
+            out.push_str(&format!("# {line}\n"));
+        }
+        for v in &self.vertices {
+            out.push_str(&format!("v {} {} {}\n", v.x, v.y, v.z));
+        }
+        for t in &self.triangles {
+            out.push_str(&format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1));
+        }
+        out
+    }
+
+    /// Voxelizes the solid into boxes of side `voxel` (m): of the voxels
+    /// parry's flood fill marks (inside or crossing the surface), those whose
+    /// centre is inside the mesh, so that thin walls do not grow by a voxel
+    /// on each side. A mesh too broken to tell inside from outside keeps all
+    /// of them. Voxels are merged into runs along x, so a row is one box.
+    /// Returns (centre, half extents) per box, at most `max_boxes` of them.
+    pub fn voxel_boxes(&self, voxel: f32, max_boxes: usize) -> Result<Vec<(Vec3, Vec3)>, String> {
+        use rapier3d::parry::query::PointQuery;
+        use rapier3d::parry::shape::{TriMesh, TriMeshFlags};
+        use rapier3d::parry::transformation::voxelization::{FillMode, VoxelSet};
+        let (lo, hi) = self.bounds();
+        let cells = ((hi - lo) / voxel).ceil();
+        if !(voxel.is_finite() && voxel > 0.0) || cells.x * cells.y * cells.z > 4.0e6 {
+            return Err(format!("voxel size {voxel} m is not positive or too small for a mesh {:?} m across", hi - lo));
+        }
+        let set = VoxelSet::with_voxel_size(&self.vertices, &self.triangles, voxel, FillMode::default(), false);
+        let mut cells: Vec<[i32; 3]> = set.voxels().iter().map(|v| v.coords.to_array()).collect();
+        cells.sort_by_key(|c| (c[2], c[1], c[0]));
+        cells.dedup();
+        let scale = set.scale;
+        let centre_of = |c: [i32; 3]| set.origin + Vec3::new(c[0] as f32 + 0.5, c[1] as f32 + 0.5, c[2] as f32 + 0.5) * scale;
+        if let Ok(solid) = TriMesh::with_flags(self.vertices.clone(), self.triangles.clone(), TriMeshFlags::ORIENTED) {
+            cells.retain(|&c| solid.contains_local_point(centre_of(c)));
+        }
+        let mut boxes = Vec::new();
+        let mut i = 0;
+        while i < cells.len() {
+            let start = cells[i];
+            let mut end = start;
+            while i + 1 < cells.len() && cells[i + 1] == [end[0] + 1, end[1], end[2]] {
+                i += 1;
+                end = cells[i];
+            }
+            let (a, b) = (centre_of(start), centre_of(end));
+            boxes.push((0.5 * (a + b), Vec3::new(0.5 * (b.x - a.x) + 0.5 * scale, 0.5 * scale, 0.5 * scale)));
+            i += 1;
+        }
+        if boxes.is_empty() {
+            return Err(format!("voxel size {voxel} m leaves no voxel inside the mesh"));
+        }
+        if boxes.len() > max_boxes {
+            return Err(format!("voxel size {voxel} m gives {} boxes, more than {max_boxes}: use larger voxels", boxes.len()));
+        }
+        Ok(boxes)
+    }
+}
+
+fn load_obj(path: &Path) -> Result<TriangleMesh, String> {
+    let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
+    let (models, _) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
+    let mut mesh = TriangleMesh::default();
+    for model in models {
+        let m = model.mesh;
+        let base = mesh.vertices.len() as u32;
+        mesh.vertices.extend(m.positions.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
+        mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]));
+    }
+    Ok(mesh)
+}
+
+fn load_stl(path: &Path) -> Result<TriangleMesh, String> {
+    let mut file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let stl = stl_io::read_stl(&mut file).map_err(|e| format!("not a readable STL file: {e}"))?;
+    Ok(TriangleMesh {
+        vertices: stl.vertices.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
+        triangles: stl.faces.iter().map(|f| f.vertices.map(|k| k as u32)).collect(),
+    })
+}
+
+/// Every mesh primitive of the default scene (or of all root nodes), with
+/// the node transforms applied. Buffers may be the GLB's binary chunk,
+/// files next to the `.gltf`, or base64 data URIs.
+fn load_gltf(path: &Path) -> Result<TriangleMesh, String> {
+    use base64::Engine;
+    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
+    let gltf = gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut buffers = Vec::new();
+    for buffer in gltf.buffers() {
+        let data = match buffer.source() {
+            gltf::buffer::Source::Bin => gltf.blob.clone().ok_or("the GLB has no binary chunk")?,
+            gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
+                Some(rest) => {
+                    let (_, b64) = rest.split_once(";base64,").ok_or(format!("buffer {}: unsupported data URI", buffer.index()))?;
+                    base64::engine::general_purpose::STANDARD.decode(b64).map_err(|e| format!("buffer {}: {e}", buffer.index()))?
+                }
+                None => std::fs::read(dir.join(uri)).map_err(|e| format!("buffer {} ({uri}): {e}", buffer.index()))?,
+            },
+        };
+        buffers.push(data);
+    }
+    let mut mesh = TriangleMesh::default();
+    let roots: Vec<gltf::Node> = match gltf.default_scene().or_else(|| gltf.scenes().next()) {
+        Some(scene) => scene.nodes().collect(),
+        None => gltf.nodes().collect(),
+    };
+    let mut stack: Vec<(gltf::Node, glam::Mat4)> = roots.into_iter().map(|n| (n, glam::Mat4::IDENTITY)).collect();
+    while let Some((node, parent)) = stack.pop() {
+        let transform = parent * glam::Mat4::from_cols_array_2d(&node.transform().matrix());
+        if let Some(m) = node.mesh() {
+            for primitive in m.primitives() {
+                if primitive.mode() != gltf::mesh::Mode::Triangles {
+                    continue;
+                }
+                let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
+                let Some(positions) = reader.read_positions() else { continue };
+                let base = mesh.vertices.len() as u32;
+                mesh.vertices.extend(positions.map(|p| transform.transform_point3(Vec3::from(p))));
+                let count = mesh.vertices.len() as u32 - base;
+                let indices: Vec<u32> = match reader.read_indices() {
+                    Some(i) => i.into_u32().collect(),
+                    None => (0..count).collect(),
+                };
+                mesh.triangles.extend(indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]));
+            }
+        }
+        stack.extend(node.children().map(|c| (c, transform)));
+    }
+    Ok(mesh)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp(name: &str, contents: &[u8]) -> std::path::PathBuf {
+        let path = std::env::temp_dir().join(format!("coulomb-hands-{}-{name}", std::process::id()));
+        std::fs::write(&path, contents).unwrap();
+        path
+    }
+
+    #[test]
+    fn obj_stl_and_gltf_load_the_same_solid() {
+        let cube = generate::u_bracket(0.04, 0.03, 0.02, 0.01);
+        let obj = temp("u.obj", cube.to_obj("test").as_bytes());
+        let from_obj = TriangleMesh::load(&obj).unwrap();
+        assert_eq!(from_obj.triangles.len(), cube.triangles.len());
+
+        // Binary STL via stl_io's writer.
+        let triangles: Vec<stl_io::Triangle> = cube
+            .triangles
+            .iter()
+            .map(|t| stl_io::Triangle {
+                normal: stl_io::Normal::new([0.0; 3]),
+                vertices: t.map(|k| stl_io::Vertex::new(cube.vertices[k as usize].to_array())),
+            })
+            .collect();
+        let mut bytes = Vec::new();
+        stl_io::write_stl(&mut bytes, triangles.iter()).unwrap();
+        let from_stl = TriangleMesh::load(&temp("u.stl", &bytes)).unwrap();
+        assert_eq!(from_stl.triangles.len(), cube.triangles.len());
+
+        // glTF with an embedded base64 buffer and a node translation.
+        let gltf = generate::to_gltf(&cube, Vec3::new(0.0, 1.0, 0.0));
+        let from_gltf = TriangleMesh::load(&temp("u.gltf", gltf.as_bytes())).unwrap();
+        assert_eq!(from_gltf.triangles.len(), cube.triangles.len());
+        let ((a, b), (c, d)) = (from_obj.bounds(), from_gltf.bounds());
+        assert!((a + Vec3::Y - c).length() < 1e-6 && (b + Vec3::Y - d).length() < 1e-6, "node transform applied");
+        std::fs::remove_file(obj).ok();
+    }
+
+    #[test]
+    fn bad_meshes_are_errors_naming_the_file() {
+        let missing = TriangleMesh::load(Path::new("no-such.obj")).unwrap_err();
+        assert_eq!(missing.file, "no-such.obj");
+        let flat = temp("flat.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        assert!(TriangleMesh::load(&flat).unwrap_err().reason.contains("no volume"));
+        let nan = temp("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+        let e = TriangleMesh::load(&nan).unwrap_err().to_string();
+        assert!(e.contains("nan.obj") && (e.contains("not finite") || e.contains("parse")), "{e}");
+        let bad = temp("x.ply", b"ply");
+        assert!(TriangleMesh::load(&bad).unwrap_err().reason.contains("unknown mesh format"));
+    }
+
+    #[test]
+    fn voxel_boxes_fill_the_u_but_not_its_gap() {
+        let u = generate::u_bracket(0.06, 0.04, 0.02, 0.01);
+        let boxes = u.voxel_boxes(0.005, 4096).unwrap();
+        let inside = |p: Vec3| boxes.iter().any(|(c, h)| ((p - *c).abs() - *h).max_element() <= 1e-6);
+        assert!(inside(Vec3::new(-0.025, 0.02, 0.0)), "an arm is solid");
+        assert!(inside(Vec3::new(0.0, 0.005, 0.0)), "the base is solid");
+        assert!(!inside(Vec3::new(0.0, 0.03, 0.0)), "the gap is empty");
+        let volume: f32 = boxes.iter().map(|(_, h)| 8.0 * h.x * h.y * h.z).sum();
+        let exact = 0.06 * 0.01 * 0.02 + 2.0 * 0.01 * 0.03 * 0.02;
+        assert!((volume / exact - 1.0).abs() < 0.15, "voxel volume {volume} vs {exact}");
+        assert!(u.voxel_boxes(0.0001, 100).is_err(), "too many boxes is an error");
+    }
+}
