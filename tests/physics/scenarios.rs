@@ -63,3 +63,25 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
     assert!(!catch.passed, "{}", table(&catch));
 }
+
+#[test]
+fn a_scenario_hand_may_replay_a_recording() {
+    // The clapping hands of a real recording sweep through a cube on a
+    // table (as in `replay --scene`), now as a scenario with a check.
+    let text = r#"{
+      "name": "claps", "duration": 3.0,
+      "scene": {"statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.3, 0.02, 0.3]}},
+                             "position": [0.0, 0.08, 0.0], "rotation": [0, 0, 0, 1], "friction": 0.5}],
+                "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
+                             "mass": 0.05, "material": "wood", "position": [0.0, 0.125, 0.0]}]},
+      "hands": [{"recording": "../data/leap/three-claps.json.lz", "side": "left"},
+                {"recording": "../data/leap/three-claps.json.lz", "side": "right"}],
+      "checks": [{"name": "knocked (m)", "measure": {"kind": "displacement", "object": "cube", "from": 0.0}, "min": 0.005}]
+    }"#;
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let s = Scenario::parse("claps.json", text, &dir).unwrap();
+    let report = run(&s);
+    assert!(report.passed, "{}", table(&report));
+    let bad = Scenario::parse("claps.json", &text.replace("three-claps", "four-claps"), &dir).unwrap_err().to_string();
+    assert!(bad.contains("claps.json: hands[0].recording") && bad.contains("four-claps"), "{bad}");
+}
