@@ -59,6 +59,10 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     // Without the other hand's thumb there is nothing to balance against.
     let alone = variant("two-hand-balance", r#""curl": [0.5, 1, 1, 1, 1]"#, r#""curl": [0, 1, 1, 1, 1]"#);
     assert!(!check(&alone, "lifted").passed, "{}", table(&alone));
+    // The spin needs the right finger's friction either side of the axis:
+    // a slippery cube slides under it and barely turns.
+    let ice = variant("spin-two-hands", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
+    assert!(!check(&ice, "spun").passed, "{}", table(&ice));
     // A hand too soft to hold the falling block: it falls through.
     let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
     assert!(!catch.passed, "{}", table(&catch));
