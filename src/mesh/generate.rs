@@ -132,30 +132,71 @@ pub fn signed_volume(mesh: &TriangleMesh) -> f32 {
 /// mesh under one node translated by `translation`: for tests and export.
 pub fn to_gltf(mesh: &TriangleMesh, translation: Vec3) -> String {
     use base64::Engine;
+    let bytes = buffer(mesh);
+    let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+    gltf_json(mesh, translation, Some(format!("data:application/octet-stream;base64,{data}"))).to_string()
+}
+
+/// The same as a binary GLB: a JSON chunk and a binary chunk, each padded
+/// to 4 bytes.
+pub fn to_glb(mesh: &TriangleMesh, translation: Vec3) -> Vec<u8> {
+    let mut json = gltf_json(mesh, translation, None).to_string().into_bytes();
+    while json.len() % 4 != 0 {
+        json.push(b' ');
+    }
+    let mut bin = buffer(mesh);
+    while bin.len() % 4 != 0 {
+        bin.push(0);
+    }
+    let total = 12 + 8 + json.len() + 8 + bin.len();
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&(json.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(&json);
+    out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"BIN\0");
+    out.extend_from_slice(&bin);
+    out
+}
+
+/// Positions (f32 × 3) then indices (u32), little-endian.
+fn buffer(mesh: &TriangleMesh) -> Vec<u8> {
     let mut bytes = Vec::new();
     for v in &mesh.vertices {
         for c in v.to_array() {
             bytes.extend_from_slice(&c.to_le_bytes());
         }
     }
-    let positions_len = bytes.len();
     for t in &mesh.triangles {
         for k in t {
             bytes.extend_from_slice(&k.to_le_bytes());
         }
     }
+    bytes
+}
+
+/// The glTF JSON for [`buffer`]; `uri` None means the GLB's binary chunk.
+fn gltf_json(mesh: &TriangleMesh, translation: Vec3, uri: Option<String>) -> serde_json::Value {
+    let positions_len = mesh.vertices.len() * 12;
+    let total = positions_len + mesh.triangles.len() * 12;
     let (lo, hi) = mesh.bounds();
-    let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+    let mut buffer = serde_json::json!({"byteLength": total});
+    if let Some(uri) = uri {
+        buffer["uri"] = uri.into();
+    }
     serde_json::json!({
         "asset": {"version": "2.0", "generator": "coulomb-hands"},
         "scene": 0,
         "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0, "translation": translation.to_array()}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-        "buffers": [{"byteLength": bytes.len(), "uri": format!("data:application/octet-stream;base64,{data}")}],
+        "buffers": [buffer],
         "bufferViews": [
             {"buffer": 0, "byteOffset": 0, "byteLength": positions_len},
-            {"buffer": 0, "byteOffset": positions_len, "byteLength": bytes.len() - positions_len}
+            {"buffer": 0, "byteOffset": positions_len, "byteLength": total - positions_len}
         ],
         "accessors": [
             {"bufferView": 0, "componentType": 5126, "count": mesh.vertices.len(), "type": "VEC3",
@@ -163,7 +204,6 @@ pub fn to_gltf(mesh: &TriangleMesh, translation: Vec3) -> String {
             {"bufferView": 1, "componentType": 5125, "count": mesh.triangles.len() * 3, "type": "SCALAR"}
         ]
     })
-    .to_string()
 }
 
 /// The meshes shipped in `assets/meshes/`, by name.

@@ -250,6 +250,8 @@ mod tests {
         assert_eq!(from_gltf.triangles.len(), cube.triangles.len());
         let ((a, b), (c, d)) = (from_obj.bounds(), from_gltf.bounds());
         assert!((a + Vec3::Y - c).length() < 1e-6 && (b + Vec3::Y - d).length() < 1e-6, "node transform applied");
+        let from_glb = TriangleMesh::load(&temp("u.glb", &generate::to_glb(&cube, Vec3::new(0.0, 1.0, 0.0)))).unwrap();
+        assert_eq!((from_glb.vertices, from_glb.triangles), (from_gltf.vertices, from_gltf.triangles), "GLB = glTF");
         std::fs::remove_file(obj).ok();
     }
 
