@@ -141,11 +141,11 @@ pub fn to_gltf(mesh: &TriangleMesh, translation: Vec3) -> String {
 /// to 4 bytes.
 pub fn to_glb(mesh: &TriangleMesh, translation: Vec3) -> Vec<u8> {
     let mut json = gltf_json(mesh, translation, None).to_string().into_bytes();
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
     let mut bin = buffer(mesh);
-    while bin.len() % 4 != 0 {
+    while !bin.len().is_multiple_of(4) {
         bin.push(0);
     }
     let total = 12 + 8 + json.len() + 8 + bin.len();
