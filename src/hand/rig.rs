@@ -96,11 +96,23 @@ impl HandRig {
     /// ([`Self::thumb_direction`]). The abducted thumb flexes towards the
     /// palm normal; the opposed one across the palm, towards the fingers.
     pub fn pose_opposed(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32) -> HandPose {
+        self.pose_spread(palm_center, rotation, curl, opposition, [0.0; 4])
+    }
+
+    /// As [`Self::pose_opposed`], with the index … pinky each swung in the
+    /// palm plane about its knuckle by `spread_deg` (degrees; positive
+    /// towards the thumb): abduction and adduction.
+    pub fn pose_spread(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32, spread_deg: [f32; 4]) -> HandPose {
         let palm = Palm { center: palm_center, rotation, half_extents: self.palm_half_extents };
         let m = self.mirror();
         let joints = std::array::from_fn(|f| {
             let finger = Finger::ALL[f];
             let (base, mut dir) = self.finger_base(finger);
+            if f > 0 {
+                // Towards the thumb is −x on a right hand: a rotation about
+                // the palm normal (+y) by −m·angle.
+                dir = Quat::from_rotation_y(-m * spread_deg[f - 1].to_radians()) * dir;
+            }
             let c = curl[f].clamp(0.0, 1.0);
             // Each finger bends its direction towards `towards`.
             let towards = if finger == Finger::Thumb {
@@ -148,6 +160,11 @@ mod tests {
         let pinch = rig.pose_opposed(Vec3::ZERO, Quat::IDENTITY, [0.3, 0.6, 0.6, 0.6, 0.6], 1.0);
         pinch.validate(0).unwrap();
         let gap = pinch.fingers[0][2].b.distance(pinch.fingers[1][2].b);
+        // Spread swings the index towards the thumb in the palm plane.
+        let spread = rig.pose_spread(Vec3::ZERO, Quat::IDENTITY, [0.0; 5], 0.0, [20.0, 0.0, 0.0, 0.0]);
+        spread.validate(0).unwrap();
+        let (tip, straight) = (spread.fingers[1][2].b, flat.fingers[1][2].b);
+        assert!(tip.x < straight.x - 0.02 && tip.y.abs() < 1e-6, "index tip {tip:?} vs {straight:?}");
         assert!(gap < 0.022 && pinch.fingers[0][2].b.y > 0.03, "thumb–index gap {gap}, thumb tip {:?}", pinch.fingers[0][2].b);
         let left = HandRig::adult(Side::Left).pose(Vec3::ZERO, Quat::IDENTITY, [0.0; 5]);
         assert!(left.fingers[0][0].a.x > 0.0);

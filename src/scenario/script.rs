@@ -50,6 +50,10 @@ pub struct Key {
     /// ([`HandRig::thumb_direction`]).
     #[serde(default)]
     pub opposition: f32,
+    /// Abduction of index … pinky in the palm plane (degrees, positive
+    /// towards the thumb, within ±30°): [`HandRig::pose_spread`].
+    #[serde(default)]
+    pub spread_deg: [f32; 4],
 }
 
 impl Key {
@@ -104,6 +108,9 @@ impl Script {
             if !(0.0..=1.0).contains(&k.opposition) {
                 return at("opposition", format!("must be in [0, 1], got {}", k.opposition));
             }
+            if let Some(a) = k.spread_deg.iter().find(|a| !(-30.0..=30.0).contains(*a)) {
+                return at("spread_deg", format!("each must be within ±30°, got {a}"));
+            }
         }
         Ok(Script { rig, keys })
     }
@@ -121,11 +128,13 @@ impl Script {
         };
         let (ca, cb) = (a.curl.each(), b.curl.each());
         let curl = std::array::from_fn(|f| ca[f] + (cb[f] - ca[f]) * s);
-        self.rig.pose_opposed(
+        let spread = std::array::from_fn(|f| a.spread_deg[f] + (b.spread_deg[f] - a.spread_deg[f]) * s);
+        self.rig.pose_spread(
             a.palm.lerp(b.palm, s),
             a.rotation().slerp(b.rotation(), s).normalize(),
             curl,
             a.opposition + (b.opposition - a.opposition) * s,
+            spread,
         )
     }
 
@@ -140,7 +149,7 @@ mod tests {
     use super::*;
 
     fn key(t: f32, y: f32, curl: f32) -> Key {
-        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), opposition: 0.0 }
+        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), opposition: 0.0, spread_deg: [0.0; 4] }
     }
 
     #[test]
