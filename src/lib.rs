@@ -27,6 +27,7 @@
 //! ```
 
 pub mod contact;
+pub mod file_error;
 pub mod friction;
 pub mod hand;
 pub mod input;
@@ -41,6 +42,7 @@ pub mod scenes;
 pub mod session;
 
 pub use contact::{Contact, ContactEvent, ContactEventKind};
+pub use file_error::FileError;
 pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};
 pub use hand::{Bone, Capsule, Finger, HandPose, Palm, Phalanx, PoseError, Side};
 pub use material::Material;

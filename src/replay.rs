@@ -199,15 +199,17 @@ pub fn replay<E: From<WorldError>>(
     let (mut begun, mut all_finite) = (0, true);
     for i in 0..steps {
         let t = i as f64 * dt;
-        let (due, waiting): (Vec<Fixture>, Vec<Fixture>) =
-            fixtures.iter().partition(|f| f.release_by <= t || world.is_gripped(f.object));
-        for f in due {
-            world.set_object_locked(f.object, false)?;
-            if !world.is_gripped(f.object) {
-                world.reseat_contacts(f.object)?;
+        for f in std::mem::take(&mut fixtures) {
+            let gripped = world.is_gripped(f.object);
+            if gripped || f.release_by <= t {
+                world.set_object_locked(f.object, false)?;
+                if !gripped {
+                    world.reseat_contacts(f.object)?;
+                }
+            } else {
+                fixtures.push(f);
             }
         }
-        fixtures = waiting;
         let mut trace_hands = Vec::new();
         for (k, hand) in hands.iter().enumerate() {
             match playback.sample(k, t) {

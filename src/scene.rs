@@ -101,22 +101,15 @@ pub struct Scene {
 }
 
 /// Why a scene file was rejected; names the file and where.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}: {reason}")]
-pub struct SceneError {
-    pub file: String,
-    pub reason: String,
-}
+pub type SceneError = crate::FileError;
 
 impl Scene {
     /// Reads and checks a scene file: JSON syntax, known fields, material
     /// names, and every object's and static's values, before anything is
     /// simulated.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let file = path.display().to_string();
-        let fail = |reason: String| SceneError { file: file.clone(), reason };
-        let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
-        Self::parse_in(&file, &text, path.parent().unwrap_or(Path::new(".")))
+        let text = SceneError::read(path)?;
+        Self::parse_in(&path.display().to_string(), &text, path.parent().unwrap_or(Path::new(".")))
     }
 
     /// Parses scene text; mesh files are looked up from the working directory.
@@ -126,15 +119,13 @@ impl Scene {
 
     /// Parses scene text whose mesh file paths are relative to `dir`.
     pub fn parse_in(file: &str, text: &str, dir: &Path) -> Result<Scene, SceneError> {
-        let entry: SceneEntry = serde_json::from_str(text)
-            .map_err(|e| SceneError { file: file.to_string(), reason: format!("line {} column {}: {e}", e.line(), e.column()) })?;
-        Self::from_entry(file, entry, dir)
+        Self::from_entry(file, SceneError::json(file, text)?, dir)
     }
 
     /// Checks a parsed scene and loads its mesh files (`file` names it in
     /// errors; mesh paths are relative to `dir`).
     pub(crate) fn from_entry(file: &str, mut entry: SceneEntry, dir: &Path) -> Result<Scene, SceneError> {
-        let fail = |reason: String| SceneError { file: file.to_string(), reason };
+        let fail = |reason: String| SceneError::new(file, reason);
         let shapes = entry.objects.iter_mut().map(|o| (o.name.clone(), &mut o.shape));
         let static_shapes = entry.statics.iter_mut().map(|s| (s.name.clone(), &mut s.shape));
         for (name, shape) in shapes.chain(static_shapes) {

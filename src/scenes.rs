@@ -267,14 +267,23 @@ pub fn held_boxes_scene(
     Ok((world, hands))
 }
 
+/// Levels and blocks per level of [`add_tower`].
+pub const TOWER_LEVELS: usize = 18;
+pub const TOWER_SLOTS: usize = 3;
+
+/// The name [`add_tower`] gives the block in `slot` (0..3) of `level` (0..18).
+pub fn tower_block_name(level: usize, slot: usize) -> String {
+    format!("block{level}-{slot}")
+}
+
 /// A tower of 18 levels × 3 wooden blocks of 7.5 × 2.5 × 1.5 cm, alternate
 /// levels turned 90°, standing on y = 0 at `base`.
 pub fn add_tower(world: &mut InteractionWorld, base: Vec3) -> Result<Vec<ObjectId>, WorldError> {
     let (long, wide, tall) = (0.075, 0.025, 0.015);
     let mass = 600.0 * long * wide * tall; // wood, 600 kg/m³
-    let mut ids = Vec::with_capacity(54);
-    for level in 0..18 {
-        for slot in 0..3 {
+    let mut ids = Vec::with_capacity(TOWER_LEVELS * TOWER_SLOTS);
+    for level in 0..TOWER_LEVELS {
+        for slot in 0..TOWER_SLOTS {
             let across = (slot as f32 - 1.0) * wide;
             let y = tall * (level as f32 + 0.5);
             let (offset, size) = if level % 2 == 0 {
@@ -282,8 +291,7 @@ pub fn add_tower(world: &mut InteractionWorld, base: Vec3) -> Result<Vec<ObjectI
             } else {
                 (Vec3::new(0.0, y, across), Vec3::new(long, tall, wide))
             };
-            let name = format!("block{level}-{slot}");
-            ids.push(world.add_object(&ObjectDesc::cuboid(&name, size, mass, base + offset))?);
+            ids.push(world.add_object(&ObjectDesc::cuboid(&tower_block_name(level, slot), size, mass, base + offset))?);
         }
     }
     Ok(ids)

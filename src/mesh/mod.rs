@@ -20,19 +20,14 @@ pub struct TriangleMesh {
 }
 
 /// Why a mesh file was rejected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}: {reason}")]
-pub struct MeshError {
-    pub file: String,
-    pub reason: String,
-}
+pub type MeshError = crate::FileError;
 
 impl TriangleMesh {
     /// Loads `.obj`, `.stl`, `.gltf` or `.glb` (all meshes of the file, in
     /// its units), then [`Self::check`]s it.
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
-        let fail = |reason: String| MeshError { file: file.clone(), reason };
+        let fail = |reason: String| MeshError::new(&file, reason);
         let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).unwrap_or_default();
         let mesh = match ext.as_str() {
             "obj" => load_obj(path).map_err(fail)?,

@@ -123,13 +123,8 @@ pub struct Scenario {
     pub checks: Vec<Check>,
 }
 
-/// Why a scenario could not be loaded or run; names the file and where.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}: {reason}")]
-pub struct ScenarioError {
-    pub file: String,
-    pub reason: String,
-}
+/// Why a scenario could not be loaded; names the file and where.
+pub type ScenarioError = crate::FileError;
 
 /// The outcome of a run.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -152,31 +147,26 @@ impl Scenario {
                     e
                 } else {
                     let names: Vec<&str> = shipped().iter().map(|s| s.0).collect();
-                    ScenarioError {
-                        file: name_or_file.into(),
-                        reason: format!("no such file, nor a shipped scenario ({})", names.join(", ")),
-                    }
+                    ScenarioError::new(name_or_file, format!("no such file, nor a shipped scenario ({})", names.join(", ")))
                 }
             }),
         }
     }
 
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-        let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| ScenarioError { file: file.clone(), reason: e.to_string() })?;
-        Self::parse(&file, &text, path.parent().unwrap_or(Path::new(".")))
+        let text = ScenarioError::read(path)?;
+        Self::parse(&path.display().to_string(), &text, path.parent().unwrap_or(Path::new(".")))
     }
 
     /// Parses and checks a scenario; `dir` is where relative recording
     /// paths start.
     pub fn parse(file: &str, text: &str, dir: &Path) -> Result<Scenario, ScenarioError> {
-        let fail = |reason: String| ScenarioError { file: file.to_string(), reason };
-        let entry: ScenarioEntry =
-            serde_json::from_str(text).map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+        let fail = |reason: String| ScenarioError::new(file, reason);
+        let entry: ScenarioEntry = ScenarioError::json(file, text)?;
         if !(entry.duration.is_finite() && entry.duration > 0.0) {
             return Err(fail(format!("duration: must be a positive number of seconds, got {}", entry.duration)));
         }
-        let scene = Scene::from_entry(file, entry.scene, dir).map_err(|e| fail(e.reason))?;
+        let scene = Scene::from_entry(file, entry.scene, dir)?;
         let config = scene.config(entry.config);
         config.validate().map_err(|e| fail(format!("config: {e}")))?;
         let hands = entry
@@ -187,7 +177,8 @@ impl Scenario {
             .collect::<Result<Vec<_>, _>>()?;
         let mut names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
         if !scene.towers.is_empty() {
-            names.extend((0..54).map(|k| format!("block{}-{}", k / 3, k % 3)));
+            use crate::scenes::{TOWER_LEVELS, TOWER_SLOTS, tower_block_name};
+            names.extend((0..TOWER_LEVELS).flat_map(|l| (0..TOWER_SLOTS).map(move |s| tower_block_name(l, s))));
         }
         for (i, c) in entry.checks.iter().enumerate() {
             let at = |why: String| fail(format!("checks[{i}] '{}': {why}", c.name));
