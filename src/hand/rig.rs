@@ -22,6 +22,23 @@ pub struct HandRig {
     pub thumb_full_curl: [f32; 3],
 }
 
+/// How a [`HandRig`]'s joints are set, beyond the palm pose.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Articulation {
+    /// Flexion of each finger (thumb first) at its base, middle and end
+    /// joint, each in [0, 1] of that joint's full flexion
+    /// ([`HandRig::full_curl`]). Equal thirds curl a finger as one; the base
+    /// (knuckle) joint alone gives a straight finger bent at the knuckle,
+    /// and knuckle and finger joints together draw the fingertip along a
+    /// line, e.g. stroking a surface it presses on.
+    pub flex: [[f32; 3]; 5],
+    /// Thumb opposition in [0, 1] ([`HandRig::thumb_direction`]).
+    pub opposition: f32,
+    /// Abduction of index … pinky in the palm plane about their knuckles
+    /// (degrees, positive towards the thumb).
+    pub spread_deg: [f32; 4],
+}
+
 impl HandRig {
     /// An average adult hand (lengths after anthropometric means, rounded).
     pub fn adult(side: Side) -> HandRig {
@@ -96,13 +113,14 @@ impl HandRig {
     /// ([`Self::thumb_direction`]). The abducted thumb flexes towards the
     /// palm normal; the opposed one across the palm, towards the fingers.
     pub fn pose_opposed(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32) -> HandPose {
-        self.pose_spread(palm_center, rotation, curl, opposition, [0.0; 4])
+        let joints = Articulation { flex: curl.map(|c| [c; 3]), opposition, spread_deg: [0.0; 4] };
+        self.pose_articulated(palm_center, rotation, &joints)
     }
 
-    /// As [`Self::pose_opposed`], with the index … pinky each swung in the
-    /// palm plane about its knuckle by `spread_deg` (degrees; positive
-    /// towards the thumb): abduction and adduction.
-    pub fn pose_spread(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32, spread_deg: [f32; 4]) -> HandPose {
+    /// The general pose: the palm at `palm_center` turned by `rotation`, and
+    /// every joint set by `joints` ([`Articulation`]).
+    pub fn pose_articulated(&self, palm_center: Vec3, rotation: Quat, joints: &Articulation) -> HandPose {
+        let Articulation { flex, opposition, spread_deg } = *joints;
         let palm = Palm { center: palm_center, rotation, half_extents: self.palm_half_extents };
         let m = self.mirror();
         let joints = std::array::from_fn(|f| {
@@ -113,7 +131,6 @@ impl HandRig {
                 // the palm normal (+y) by −m·angle.
                 dir = Quat::from_rotation_y(-m * spread_deg[f - 1].to_radians()) * dir;
             }
-            let c = curl[f].clamp(0.0, 1.0);
             // Each finger bends its direction towards `towards`.
             let towards = if finger == Finger::Thumb {
                 dir = self.thumb_direction(opposition);
@@ -126,7 +143,7 @@ impl HandRig {
             let mut angle = 0.0;
             let full = if finger == Finger::Thumb { self.thumb_full_curl } else { self.full_curl };
             for p in 0..3 {
-                angle += c * full[p];
+                angle += flex[f][p].clamp(0.0, 1.0) * full[p];
                 let d = Quat::from_axis_angle(axis, angle) * dir;
                 chain[p + 1] = chain[p] + self.lengths[f][p] * d;
             }
@@ -161,12 +178,42 @@ mod tests {
         pinch.validate(0).unwrap();
         let gap = pinch.fingers[0][2].b.distance(pinch.fingers[1][2].b);
         // Spread swings the index towards the thumb in the palm plane.
-        let spread = rig.pose_spread(Vec3::ZERO, Quat::IDENTITY, [0.0; 5], 0.0, [20.0, 0.0, 0.0, 0.0]);
+        let joints = Articulation { spread_deg: [20.0, 0.0, 0.0, 0.0], ..Articulation::default() };
+        let spread = rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints);
         spread.validate(0).unwrap();
         let (tip, straight) = (spread.fingers[1][2].b, flat.fingers[1][2].b);
         assert!(tip.x < straight.x - 0.02 && tip.y.abs() < 1e-6, "index tip {tip:?} vs {straight:?}");
         assert!(gap < 0.022 && pinch.fingers[0][2].b.y > 0.03, "thumb–index gap {gap}, thumb tip {:?}", pinch.fingers[0][2].b);
         let left = HandRig::adult(Side::Left).pose(Vec3::ZERO, Quat::IDENTITY, [0.0; 5]);
         assert!(left.fingers[0][0].a.x > 0.0);
+    }
+
+    #[test]
+    fn knuckle_flexion_bends_a_straight_finger_and_joint_pairs_move_the_tip_along_a_line() {
+        let rig = HandRig::adult(Side::Right);
+        let mut joints = Articulation::default();
+        // The index bent 0.5 at the knuckle only: its phalanges stay in line,
+        // pointing 35° (half of 70°) towards the palm normal.
+        joints.flex[1] = [0.5, 0.0, 0.0];
+        let pose = rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints);
+        pose.validate(0).unwrap();
+        let index = pose.fingers[1];
+        let dir = (index[2].b - index[0].a).normalize();
+        let want = Vec3::new(0.0, 35f32.to_radians().sin(), 35f32.to_radians().cos());
+        assert!(dir.distance(want) < 1e-5, "{dir:?}");
+        assert!((index[2].b.distance(index[0].a) - 0.085).abs() < 1e-5, "a straight finger spans its bone lengths");
+        // Knuckle flexion with the finger joints opening keeps the middle
+        // fingertip in the plane z ≈ const while it moves 2 cm along y: a
+        // stroke across a surface facing the fingers.
+        let tip = |k: f32, c: f32| {
+            let mut j = Articulation::default();
+            j.flex[2] = [k, c, c];
+            rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &j).fingers[2][2].b
+        };
+        let (a, b) = (tip(0.22, 0.56), tip(0.6, 0.25));
+        assert!(b.y - a.y > 0.015 && (b.z - a.z).abs() < 0.004, "{a:?} → {b:?}");
+        // Equal thirds are the plain curl.
+        joints.flex = [[0.4; 3]; 5];
+        assert_eq!(rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints), rig.pose(Vec3::ZERO, Quat::IDENTITY, [0.4; 5]));
     }
 }

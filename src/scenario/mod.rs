@@ -25,7 +25,8 @@
 //!   defaults.
 //! * `hands`: each either scripted, `{"side", "keys": [Key, ..]}` (see
 //!   [`script::Key`]: time, palm centre, palm rotation in degrees, flexion
-//!   per finger, thumb opposition, finger spread; optional `"scale"` for
+//!   per finger, optional knuckle flexion, thumb opposition, finger spread;
+//!   optional `"scale"` for
 //!   the hand's size),
 //!   or a Leap recording,
 //!   `{"recording": "path.json.lz", "offset": [x, y, z]}`, whose path is

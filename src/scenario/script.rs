@@ -1,7 +1,7 @@
 //! Scripted hands: a few keyframes of palm pose and finger flexion, eased
 //! between, on the parametric [`HandRig`].
 
-use crate::hand::rig::HandRig;
+use crate::hand::rig::{Articulation, HandRig};
 use crate::hand::{HandPose, Side};
 use crate::scenes::smoothstep;
 use glam::{EulerRot, Quat, Vec3};
@@ -45,18 +45,31 @@ pub struct Key {
     pub rotation_deg: Vec3,
     #[serde(default)]
     pub curl: Curl,
+    /// Flexion of each finger's base joint (knuckle; the thumb's
+    /// metacarpal joint) in [0, 1], one or five, instead of `curl` there;
+    /// `curl` then bends the two outer joints. Absent: the knuckle follows
+    /// `curl`. Knuckle and finger flexion together draw a fingertip along a
+    /// surface ([`Articulation`]).
+    #[serde(default)]
+    pub knuckle: Option<Curl>,
     /// Thumb opposition in [0, 1]: 0 abducted in the palm plane, 1 swung in
     /// front of the palm to meet the fingertips
     /// ([`HandRig::thumb_direction`]).
     #[serde(default)]
     pub opposition: f32,
     /// Abduction of index … pinky in the palm plane (degrees, positive
-    /// towards the thumb, within ±30°): [`HandRig::pose_spread`].
+    /// towards the thumb, within ±30°): [`Articulation::spread_deg`].
     #[serde(default)]
     pub spread_deg: [f32; 4],
 }
 
 impl Key {
+    /// Flexion per finger and joint: the knuckle, then `curl` twice.
+    fn flex(&self) -> [[f32; 3]; 5] {
+        let (curl, knuckle) = (self.curl.each(), self.knuckle.unwrap_or(self.curl).each());
+        std::array::from_fn(|f| [knuckle[f], curl[f], curl[f]])
+    }
+
     fn rotation(&self) -> Quat {
         let r = self.rotation_deg * (std::f32::consts::PI / 180.0);
         // About x first, then y, then z, all world axes: R = Rz·Ry·Rx.
@@ -105,6 +118,9 @@ impl Script {
             if let Some(c) = k.curl.each().iter().find(|c| !(0.0..=1.0).contains(*c)) {
                 return at("curl", format!("each flexion must be in [0, 1], got {c}"));
             }
+            if let Some(c) = k.knuckle.map(Curl::each).and_then(|c| c.into_iter().find(|c| !(0.0..=1.0).contains(c))) {
+                return at("knuckle", format!("each flexion must be in [0, 1], got {c}"));
+            }
             if !(0.0..=1.0).contains(&k.opposition) {
                 return at("opposition", format!("must be in [0, 1], got {}", k.opposition));
             }
@@ -126,16 +142,14 @@ impl Script {
                 (a, b, smoothstep(a.t, b.t, t))
             }
         };
-        let (ca, cb) = (a.curl.each(), b.curl.each());
-        let curl = std::array::from_fn(|f| ca[f] + (cb[f] - ca[f]) * s);
-        let spread = std::array::from_fn(|f| a.spread_deg[f] + (b.spread_deg[f] - a.spread_deg[f]) * s);
-        self.rig.pose_spread(
-            a.palm.lerp(b.palm, s),
-            a.rotation().slerp(b.rotation(), s).normalize(),
-            curl,
-            a.opposition + (b.opposition - a.opposition) * s,
-            spread,
-        )
+        let lerp = |x: f32, y: f32| x + (y - x) * s;
+        let (fa, fb) = (a.flex(), b.flex());
+        let joints = Articulation {
+            flex: std::array::from_fn(|f| std::array::from_fn(|j| lerp(fa[f][j], fb[f][j]))),
+            opposition: lerp(a.opposition, b.opposition),
+            spread_deg: std::array::from_fn(|f| lerp(a.spread_deg[f], b.spread_deg[f])),
+        };
+        self.rig.pose_articulated(a.palm.lerp(b.palm, s), a.rotation().slerp(b.rotation(), s).normalize(), &joints)
     }
 
     /// When the last key is reached (s).
@@ -149,7 +163,7 @@ mod tests {
     use super::*;
 
     fn key(t: f32, y: f32, curl: f32) -> Key {
-        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), opposition: 0.0, spread_deg: [0.0; 4] }
+        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), knuckle: None, opposition: 0.0, spread_deg: [0.0; 4] }
     }
 
     #[test]
@@ -160,6 +174,14 @@ mod tests {
         assert!(s.pose(1.1).palm.center.y - 0.1 < 0.2 * 0.1 * 0.5, "slow start (ease in)");
         assert_eq!(s.pose(3.0).palm.center.y, 0.3);
         assert_eq!(s.pose(3.0), s.rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [1.0; 5]));
+    }
+
+    #[test]
+    fn knuckle_keys_ease_the_knuckle_apart_from_the_curl() {
+        let bent = Key { knuckle: Some(Curl::All(1.0)), ..key(1.0, 0.0, 0.0) };
+        let s = Script::new(Side::Right, vec![key(0.0, 0.0, 0.0), bent]).unwrap();
+        let joints = Articulation { flex: [[0.5, 0.0, 0.0]; 5], ..Articulation::default() };
+        assert_eq!(s.pose(0.5), s.rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints));
     }
 
     #[test]
@@ -177,6 +199,8 @@ mod tests {
         assert!(e.starts_with("keys[0].palm"), "{e}");
         let e = Script::new(Side::Left, vec![key(0.0, 0.1, 1.5)]).unwrap_err();
         assert!(e.starts_with("keys[0].curl"), "{e}");
+        let e = Script::new(Side::Left, vec![Key { knuckle: Some(Curl::Each([0.0, 0.5, -0.1, 0.0, 0.0])), ..key(0.0, 0.1, 0.0) }]).unwrap_err();
+        assert!(e.starts_with("keys[0].knuckle"), "{e}");
         assert!(Script::new(Side::Left, vec![]).is_err());
     }
 }
