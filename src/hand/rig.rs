@@ -27,7 +27,7 @@ pub struct HandRig {
 pub struct Articulation {
     /// Flexion of each finger (thumb first) at its base, middle and end
     /// joint, each in [0, 1] of that joint's full flexion
-    /// ([`HandRig::full_curl`]). Equal thirds curl a finger as one; the base
+    /// ([`HandRig::full_curl`], the thumb's [`HandRig::thumb_full_curl`]). Equal thirds curl a finger as one; the base
     /// (knuckle) joint alone gives a straight finger bent at the knuckle,
     /// and knuckle and finger joints together draw the fingertip along a
     /// line, e.g. stroking a surface it presses on.

@@ -28,6 +28,11 @@ impl Curl {
             Curl::Each(c) => c,
         }
     }
+
+    /// The first flexion outside [0, 1], if any.
+    fn outside_unit(self) -> Option<f32> {
+        self.each().into_iter().find(|c| !(0.0..=1.0).contains(c))
+    }
 }
 
 /// One keyframe.
@@ -115,10 +120,10 @@ impl Script {
             if !k.rotation_deg.is_finite() {
                 return at("rotation_deg", format!("must be finite, got {:?}", k.rotation_deg));
             }
-            if let Some(c) = k.curl.each().iter().find(|c| !(0.0..=1.0).contains(*c)) {
+            if let Some(c) = k.curl.outside_unit() {
                 return at("curl", format!("each flexion must be in [0, 1], got {c}"));
             }
-            if let Some(c) = k.knuckle.map(Curl::each).and_then(|c| c.into_iter().find(|c| !(0.0..=1.0).contains(c))) {
+            if let Some(c) = k.knuckle.and_then(Curl::outside_unit) {
                 return at("knuckle", format!("each flexion must be in [0, 1], got {c}"));
             }
             if !(0.0..=1.0).contains(&k.opposition) {
