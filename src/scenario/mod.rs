@@ -58,7 +58,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
             &[$(($name, include_str!(concat!("../../scenarios/", $name, ".json")))),*]
         };
     }
-    shipped!["push", "pull", "grasp-lift", "palmar-grasp", "motion-control", "handover", "two-hand-balance", "spin-two-hands", "tool-knock-tower", "jenga-one-hand", "jenga-two-hands", "flat-hand-lift", "catch", "slide-slippery", "tilt-wooden"]
+    shipped!["push", "pull", "grasp-lift", "palmar-grasp", "motion-control", "handover", "two-hand-balance", "spin-one-hand", "spin-two-hands", "tool-knock-tower", "jenga-one-hand", "jenga-two-hands", "flat-hand-lift", "catch", "slide-slippery", "tilt-wooden"]
 }
 
 #[derive(Debug, Clone, serde::Deserialize)]
