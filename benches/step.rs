@@ -1,7 +1,7 @@
 //! Criterion benchmarks of one interaction step (see README "Benchmarks").
 
 use coulomb_hands::InteractionConfig;
-use coulomb_hands::scenes::held_boxes_scene;
+use coulomb_hands::run::bench::held_boxes_scene;
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 

@@ -5,7 +5,10 @@
 //! [`input`] (recordings, trackers, coordinate conversions) →
 //! [`hand`] (tracked skeletal poses) → [`contact`] (contact points, skin
 //! patches, slipping surface points) → [`friction`] (the pure contact law,
-//! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps rapier).
+//! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps
+//! rapier) → [`output`] (traces, sessions). What hands touch is in
+//! [`scene`]; [`run`] drives worlds through time (replays, scenarios, the
+//! live stream, the demo).
 //!
 //! ```
 //! use coulomb_hands::{InteractionConfig, InteractionWorld, ObjectDesc, Side, StaticDesc};
@@ -14,7 +17,8 @@
 //! # fn main() -> Result<(), coulomb_hands::WorldError> {
 //! let mut world = InteractionWorld::new(InteractionConfig::default())?;
 //! world.add_static(&StaticDesc::ground(0.0, 0.5))?;
-//! let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(0.05), 0.05, Vec3::new(0.0, 0.025, 0.0)))?;
+//! let size = Vec3::splat(0.05);
+//! let cube = world.add_object(&ObjectDesc::cuboid("cube", size, 0.05, Vec3::new(0.0, 0.025, 0.0)))?;
 //! let hand = world.add_hand(Side::Right);
 //! let rig = coulomb_hands::hand::rig::HandRig::adult(Side::Right);
 //! let pose = rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [0.0; 5]);
@@ -26,25 +30,27 @@
 //! # }
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod contact;
 pub mod file_error;
 pub mod friction;
 pub mod hand;
 pub mod input;
-pub mod material;
-pub mod mesh;
-pub mod object;
+pub mod output;
 pub mod pipeline;
-pub mod replay;
-pub mod scenario;
+pub mod run;
 pub mod scene;
-pub mod scenes;
-pub mod session;
 
 pub use contact::{Contact, ContactEvent, ContactEventKind};
 pub use file_error::FileError;
 pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};
-pub use hand::{Bone, Capsule, Finger, HandPose, Palm, Phalanx, PoseError, Side};
-pub use material::Material;
-pub use object::{GammaMode, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, ShapeDesc, StaticDesc};
-pub use pipeline::{ConfigError, HandId, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError};
+pub use hand::{Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side};
+pub use pipeline::{
+    ConfigError, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError,
+};
+pub use run::RunError;
+pub use scene::{
+    GammaMode, Material, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, ShapeDesc,
+    StaticDesc,
+};

@@ -1,8 +1,9 @@
 //! `coulomb-hands`: the headless command line.
 
 use clap::{Parser, Subcommand};
-use coulomb_hands::scenes::{GraspLiftCarry, held_boxes_scene};
-use coulomb_hands::{InteractionConfig, KineticFriction};
+use coulomb_hands::run::bench::{held_boxes_scene, time_steps};
+use coulomb_hands::run::demo::GraspLiftCarry;
+use coulomb_hands::{InteractionConfig, KineticFriction, RunError};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -50,7 +51,7 @@ enum Command {
         record: Option<std::path::PathBuf>,
         /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
         #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
-        object_at_grasp: Option<coulomb_hands::replay::GraspObject>,
+        object_at_grasp: Option<coulomb_hands::run::replay::GraspObject>,
         /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
         #[arg(long, default_value = "400", value_parser = parse_gamma)]
         gamma: coulomb_hands::GammaMode,
@@ -155,21 +156,6 @@ fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
     }
 }
 
-/// Errors of a replay run, for the CLI.
-#[derive(Debug, thiserror::Error)]
-enum ReplayError {
-    #[error(transparent)]
-    Input(#[from] coulomb_hands::input::InputError),
-    #[error(transparent)]
-    World(#[from] coulomb_hands::WorldError),
-    #[error(transparent)]
-    Session(#[from] coulomb_hands::session::SessionError),
-    #[error(transparent)]
-    Scene(#[from] coulomb_hands::scene::SceneError),
-    #[error("trace: {0}")]
-    Trace(#[from] std::io::Error),
-}
-
 struct ReplayArgs<'a> {
     file: &'a std::path::Path,
     trace: Option<&'a std::path::Path>,
@@ -177,25 +163,28 @@ struct ReplayArgs<'a> {
     device: glam::Vec3,
     grace: f64,
     gamma: coulomb_hands::GammaMode,
-    object: Option<coulomb_hands::replay::GraspObject>,
+    object: Option<coulomb_hands::run::replay::GraspObject>,
     record: Option<&'a std::path::Path>,
     scene: Option<&'a std::path::Path>,
 }
 
-fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
+fn replay(args: ReplayArgs) -> Result<(), RunError> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
-    use coulomb_hands::replay::{place_at_grasp, replay, write_trace_line};
+    use coulomb_hands::output::Session;
+    use coulomb_hands::run::observe::TraceWriter;
+    use coulomb_hands::run::replay::{place_at_grasp, replay, replay_world};
     let ReplayArgs { file, trace, json, device, grace, gamma, object, record, scene } = args;
     let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
-    if std::fs::read_to_string(file).is_ok_and(|t| coulomb_hands::session::Session::sniff(&t)) {
+    if std::fs::read_to_string(file).is_ok_and(|t| Session::sniff(&t)) {
         return replay_session(file, json);
     }
     let recording = leap::load(file)?;
-    let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(device), grace)?;
+    let conversion = Conversion::leap_desktop(device);
+    let playback = Playback::new(&recording.source_name, &recording.frames, &conversion, grace)?;
     let config = InteractionConfig { gamma, ..InteractionConfig::default() };
-    let mut world = coulomb_hands::replay::replay_world(config, record.is_some())?;
+    let mut world = replay_world(config, record.is_some())?;
     if let Some(scene) = &scene {
-        scene.add_to(&mut world)?;
+        world.add_scene(scene)?;
     }
     let mut fixtures = Vec::new();
     let mut site = None;
@@ -204,20 +193,15 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
         fixtures.push(fixture);
         site = Some(s);
     }
-    let mut out = match trace {
-        Some(path) => Some(std::io::BufWriter::new(std::fs::File::create(path)?)),
-        None => None,
+    let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
+    let summary = match writer.as_mut() {
+        Some(w) => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [w])?,
+        None => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [])?,
     };
-    let summary = replay::<ReplayError>(&recording.source_name, &playback, &mut world, &fixtures, |_, line| {
-        if let Some(out) = out.as_mut() {
-            write_trace_line(out, line)?;
-        }
-        Ok(())
-    })?;
-    if let Some(mut out) = out {
-        std::io::Write::flush(&mut out)?;
+    if let Some(w) = writer {
+        w.finish()?;
     }
-    if let (Some(path), Some(session)) = (record, world.take_recording()) {
+    if let (Some(path), Some(session)) = (record, Session::take(&mut world)) {
         session.save(path)?;
     }
     if json {
@@ -225,7 +209,10 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
         return Ok(());
     }
     println!("replayed {} (format {})", summary.source, recording.format_version);
-    println!("frames: {}, hands: {}, duration: {:.2} s, physics steps: {}", summary.frames, summary.hands, summary.duration, summary.steps);
+    println!(
+        "frames: {}, hands: {}, duration: {:.2} s, physics steps: {}",
+        summary.frames, summary.hands, summary.duration, summary.steps
+    );
     if let Some(s) = site {
         println!(
             "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",
@@ -240,57 +227,27 @@ fn replay(args: ReplayArgs) -> Result<(), ReplayError> {
     Ok(())
 }
 
-fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), ReplayError> {
-    use coulomb_hands::input::{convert::Conversion, live::LiveLeap, skeleton::hand_pose};
+/// A buffered output file.
+fn create(path: &std::path::Path) -> Result<std::io::BufWriter<std::fs::File>, RunError> {
+    Ok(std::io::BufWriter::new(std::fs::File::create(path)?))
+}
+
+fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), RunError> {
+    use coulomb_hands::input::{convert::Conversion, playback::DEFAULT_GRACE};
+    use coulomb_hands::run::{live::run_live, replay::replay_world};
+    let mut world = replay_world(InteractionConfig::default(), false)?;
     let conversion = Conversion::leap_desktop(device);
-    let mut stream = LiveLeap::connect(url)?;
-    let (mut world, _) = coulomb_hands::replay::world_with_objects(InteractionConfig::default(), &[])?;
-    let mut hands: Vec<(i64, coulomb_hands::HandId)> = Vec::new();
-    let mut start = None;
-    let mut begun = 0;
-    while let Some(frame) = stream.next_frame()? {
-        let t0 = *start.get_or_insert(frame.timestamp_us);
-        let t = (frame.timestamp_us - t0) as f64 * 1e-6;
-        for (id, hand) in &hands {
-            if !frame.hands.iter().any(|h| h.id == *id) {
-                world.clear_hand_pose(*hand)?;
-            }
-        }
-        for tracked in &frame.hands {
-            let hand = match hands.iter().find(|(id, _)| *id == tracked.id) {
-                Some((_, h)) => *h,
-                None => {
-                    let h = world.add_hand(tracked.side);
-                    hands.push((tracked.id, h));
-                    h
-                }
-            };
-            match hand_pose(tracked, &conversion) {
-                Ok(pose) if pose.validate(0).is_ok() => world.set_hand_pose(hand, &pose)?,
-                _ => world.clear_hand_pose(hand)?,
-            }
-        }
-        while world.time() < t {
-            world.step();
-            begun += world.events().iter().filter(|e| e.kind == coulomb_hands::ContactEventKind::Began).count();
-        }
-        if t >= seconds {
-            break;
-        }
-    }
+    let s = run_live(url, &mut world, conversion, DEFAULT_GRACE, seconds, &mut [])?;
     println!(
-        "live {url}: {} frames, {} skipped, {} hands seen, {:.2} s simulated, {begun} contacts begun",
-        stream.frames,
-        stream.skipped,
-        hands.len(),
-        world.time()
+        "live {url}: {} frames, {} skipped, {} hands seen, {:.2} s simulated, {} contacts begun",
+        s.frames, s.skipped, s.hands_seen, s.simulated, s.contacts_begun
     );
     Ok(())
 }
 
 /// Replays a recorded session file and prints what its objects did.
-fn replay_session(file: &std::path::Path, json: bool) -> Result<(), ReplayError> {
-    use coulomb_hands::session::{Session, object_states};
+fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
+    use coulomb_hands::output::session::{Session, object_states};
     let session = Session::load(file)?;
     let mut start = None;
     let mut max_speed: Vec<f32> = Vec::new();
@@ -330,56 +287,35 @@ fn replay_session(file: &std::path::Path, json: bool) -> Result<(), ReplayError>
 }
 
 fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
-    let (mut world, _) = held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
-    // The first simulated second, while the tower settles and falls asleep,
-    // is timed apart from the steady state.
-    let settle = Instant::now();
-    let settle_steps = (1.0 / world.config().dt).round() as usize;
-    for _ in 0..settle_steps {
-        world.step();
-    }
-    let settle_us = settle.elapsed().as_secs_f64() / settle_steps as f64 * 1e6;
-    let (mut hands_ns, mut total_ns) = (0u128, 0u128);
-    for _ in 0..steps {
-        let t0 = Instant::now();
-        world.apply_hand_forces();
-        let t1 = Instant::now();
-        world.step_physics();
-        let t2 = Instant::now();
-        hands_ns += (t1 - t0).as_nanos();
-        total_ns += (t2 - t0).as_nanos();
-    }
-    let n = steps.max(1) as f64;
-    let bones = world.contacts().iter().filter(|c| c.normal_force > 0.0).count();
-    println!("scene: 2 hands, {boxes} held boxes, tower: {tower}; {bones} bones pressing, {} objects", world.object_count());
-    println!("interaction layer (contacts + forces): {:8.2} µs/step", hands_ns as f64 / n / 1e3);
-    println!("full step (with rapier):               {:8.2} µs/step", total_ns as f64 / n / 1e3);
-    println!("full step in the first second (settling): {settle_us:5.2} µs/step");
+    let (mut world, _) =
+        held_boxes_scene(InteractionConfig::default(), boxes, tower).map_err(|e| e.to_string())?;
+    let r = time_steps(&mut world, steps);
+    println!(
+        "scene: 2 hands, {boxes} held boxes, tower: {tower}; {} bones pressing, {} objects",
+        r.bones_pressing, r.objects
+    );
+    println!("interaction layer (contacts + forces): {:8.2} µs/step", r.interaction_layer_us);
+    println!("full step (with rapier):               {:8.2} µs/step", r.full_step_us);
+    println!("full step in the first second (settling): {:5.2} µs/step", r.settling_us);
     Ok(())
 }
 
-/// Errors of a scenario run, for the CLI.
-#[derive(Debug, thiserror::Error)]
-enum ScenarioRunError {
-    #[error(transparent)]
-    Scenario(#[from] coulomb_hands::scenario::ScenarioError),
-    #[error(transparent)]
-    World(#[from] coulomb_hands::WorldError),
-    #[error("trace: {0}")]
-    Io(#[from] std::io::Error),
-}
-
 /// Runs one scenario or all shipped ones. `Ok(false)` when a check failed.
-fn scenario(name: Option<&str>, all: bool, trace: Option<&std::path::Path>, json: bool) -> Result<bool, ScenarioRunError> {
-    use coulomb_hands::replay::write_trace_line;
-    use coulomb_hands::scenario::{Scenario, shipped};
+fn scenario(
+    name: Option<&str>,
+    all: bool,
+    trace: Option<&std::path::Path>,
+    json: bool,
+) -> Result<bool, RunError> {
+    use coulomb_hands::run::observe::TraceWriter;
+    use coulomb_hands::run::scenario::{Scenario, shipped};
     let names: Vec<String> = match name {
         Some(n) if !all => vec![n.to_string()],
         _ => shipped().iter().map(|s| s.0.to_string()).collect(),
     };
     // Every file is checked before anything runs.
     let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
-    let mut out = trace.map(|p| std::fs::File::create(p).map(std::io::BufWriter::new)).transpose()?;
+    let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
     let bar = if all && !json {
         let bar = indicatif::ProgressBar::new(scenarios.len() as u64);
         bar.set_style(indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg} ({elapsed})").expect("valid template"));
@@ -392,18 +328,16 @@ fn scenario(name: Option<&str>, all: bool, trace: Option<&std::path::Path>, json
     for s in &scenarios {
         bar.set_message(s.name.clone());
         let t0 = Instant::now();
-        let report = s.run::<ScenarioRunError>(|_, line| {
-            if let Some(out) = out.as_mut() {
-                write_trace_line(out, line)?;
-            }
-            Ok(())
-        })?;
+        let report = match writer.as_mut() {
+            Some(w) => s.run(&mut [w])?,
+            None => s.run(&mut [])?,
+        };
         reports.push((report, t0.elapsed().as_secs_f64(), s.description.clone()));
         bar.inc(1);
     }
     bar.finish_and_clear();
-    if let Some(mut out) = out {
-        std::io::Write::flush(&mut out)?;
+    if let Some(w) = writer {
+        w.finish()?;
     }
     let passed = reports.iter().all(|r| r.0.passed);
     if json {
@@ -433,7 +367,7 @@ fn scenario(name: Option<&str>, all: bool, trace: Option<&std::path::Path>, json
 
 /// Writes `mesh::generate::shipped()` as OBJ files into `out`.
 fn write_meshes(out: &std::path::Path) -> std::io::Result<()> {
-    use coulomb_hands::mesh::generate::{header, shipped};
+    use coulomb_hands::scene::mesh::generate::{header, shipped};
     std::fs::create_dir_all(out)?;
     for (name, mesh) in shipped() {
         let path = out.join(format!("{name}.obj"));

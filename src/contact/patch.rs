@@ -8,7 +8,11 @@
 //! but resist twisting and rocking of the object against the skin: the
 //! stabilising effect the thesis reports for 9 samples over 1.
 
-use glam::Vec3;
+use super::ObjectView;
+use super::anchor::Anchor;
+use super::surface;
+use crate::friction::{FrictionCoefficients, slipped_stretch, slips};
+use glam::{Mat3, Vec3};
 
 /// Patch sizes per skin class (§3.5.4: thumb and palm patches are wider).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -59,6 +63,73 @@ pub fn sample_forces(total: Vec3, deviations: &[Vec3], stiffness: f32, out: &mut
     let n = deviations.len().max(1) as f32;
     let mean = deviations.iter().copied().sum::<Vec3>() / n;
     out.extend(deviations.iter().map(|e| total / n - stiffness / n * (*e - mean)));
+}
+
+/// A contact's patch as one step sees it (world).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PatchStep {
+    /// The contact point C and the normal there.
+    pub center: Vec3,
+    pub normal: Vec3,
+    /// The skin frame's rotation now, and its rate (per s).
+    pub skin: Mat3,
+    pub skin_rate: Mat3,
+    /// The contact's force on the object (N) and its normal magnitude.
+    pub force: Vec3,
+    pub normal_force: f32,
+    /// The contact's stiffness γ (N/m) and damping (N·s/m).
+    pub gamma: f32,
+    pub damping: f32,
+    pub mu: FrictionCoefficients,
+}
+
+/// Buffers reused from step to step.
+#[derive(Debug, Default)]
+pub(crate) struct PatchScratch {
+    deviations: Vec<Vec3>,
+    sample_forces: Vec<Vec3>,
+}
+
+/// Spreads a contact's force over its skin patch: each sample keeps its
+/// share of the force plus its deviation spring, limited by its own share
+/// of the friction cone (a sample beyond it slips by the slip rule, which
+/// is how a patch slips in torsion). Writes the samples' world points to
+/// `points` and appends `(force on the object, point)` per sample to `out`.
+pub(crate) fn spread(
+    step: &PatchStep,
+    anchor: &mut Anchor,
+    object: &ObjectView,
+    scratch: &mut PatchScratch,
+    points: &mut Vec<Vec3>,
+    out: &mut Vec<(Vec3, Vec3)>,
+) {
+    let pose = &object.pose;
+    let (c, n) = (step.center, step.normal);
+    // Rotations as matrices: each is applied to every sample.
+    let object_rot = Mat3::from_quat(pose.rotation);
+    // Damping of the deviations, folded in as extra stretch c/γ · ė.
+    let lag = if step.gamma > 0.0 { step.damping / step.gamma } else { 0.0 };
+    let normal_limit = step.normal_force / step.gamma;
+    scratch.deviations.clear();
+    points.clear();
+    for (ci_local, skin) in anchor.samples.iter_mut() {
+        let mut ci = pose.translation + object_rot * *ci_local;
+        let rest = c + step.skin * *skin;
+        let e = ci - rest;
+        let e_n = e.dot(n).clamp(-normal_limit, normal_limit);
+        let mut e_t = e - e.dot(n) * n;
+        if slips(e_t, step.normal_force, step.mu, step.gamma) {
+            // This sample slips: its object point moves along the surface.
+            e_t = slipped_stretch(e_t, step.normal_force, step.mu, step.gamma);
+            ci = surface::project_to_surface(object.shape, pose, rest + e_t + e_n * n);
+            *ci_local = pose.inverse_transform_point(ci);
+        }
+        let e_rate = object.angvel.cross(ci - c) - step.skin_rate * *skin;
+        scratch.deviations.push(e_t + e_n * n + lag * e_rate);
+        points.push(ci);
+    }
+    sample_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.sample_forces);
+    out.extend(scratch.sample_forces.iter().copied().zip(points.iter().copied()));
 }
 
 #[cfg(test)]

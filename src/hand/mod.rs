@@ -9,6 +9,16 @@ use glam::{Quat, Vec3};
 
 pub mod rig;
 
+/// Handle of a hand in an [`crate::InteractionWorld`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+pub struct HandId(pub u32);
+
+impl std::fmt::Display for HandId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "hand {}", self.0)
+    }
+}
+
 /// Which hand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -201,6 +211,25 @@ pub struct HandPose {
     pub fingers: [[Capsule; 3]; 5],
 }
 
+/// A hand's state at one instant: its pose and the tracker's own grab and
+/// pinch strengths (0 to 1), when it reports them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HandSample {
+    /// The 16 bones (world, m).
+    pub pose: HandPose,
+    /// The tracker's grab strength, if any.
+    pub grab: Option<f32>,
+    /// The tracker's pinch strength, if any.
+    pub pinch: Option<f32>,
+}
+
+impl HandSample {
+    /// A pose without tracker strengths (a scripted or synthetic hand).
+    pub fn pose(pose: HandPose) -> HandSample {
+        HandSample { pose, grab: None, pinch: None }
+    }
+}
+
 /// Positions beyond this distance from the origin (m) are rejected as
 /// absurd tracking data rather than handed to the physics engine.
 pub const MAX_COORDINATE: f32 = 1.0e4;
@@ -241,6 +270,29 @@ impl HandPose {
             Bone::Palm => BoneShape::Palm(self.palm),
             Bone::Finger(f, p) => BoneShape::Capsule(self.fingers[f as usize][p as usize]),
         }
+    }
+
+    /// The centre of the palm's grasping face (world, m): where trackers put
+    /// the palm position.
+    pub fn palm_surface(&self) -> Vec3 {
+        self.palm.to_world(Vec3::Y * self.palm.half_extents.y)
+    }
+
+    /// The pose `t` of the way from `self` to `other` (0 to 1), joint by
+    /// joint; the palm rotation by normalised spherical interpolation.
+    pub fn lerp(&self, other: &HandPose, t: f32) -> HandPose {
+        let mut out = self.clone();
+        out.palm.center = self.palm.center.lerp(other.palm.center, t);
+        out.palm.half_extents = self.palm.half_extents.lerp(other.palm.half_extents, t);
+        out.palm.rotation = self.palm.rotation.slerp(other.palm.rotation, t).normalize();
+        for (f, finger) in out.fingers.iter_mut().enumerate() {
+            for (p, bone) in finger.iter_mut().enumerate() {
+                let (x, y) = (&self.fingers[f][p], &other.fingers[f][p]);
+                let radius = x.radius + (y.radius - x.radius) * t;
+                *bone = Capsule { a: x.a.lerp(y.a, t), b: x.b.lerp(y.b, t), radius };
+            }
+        }
+        out
     }
 
     /// The same pose moved rigidly: `rotation` about `pivot`, then `translation`.

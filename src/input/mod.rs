@@ -5,7 +5,6 @@
 //! world (metres, y up); [`skeleton::hand_pose`] builds the 16-bone model.
 
 pub mod convert;
-pub mod grasp;
 pub mod layouts;
 pub mod leap;
 pub mod live;

@@ -3,31 +3,25 @@
 //! stays lost longer than the grace period is reported as untracked.
 
 use super::convert::Conversion;
-use super::skeleton::{blend, hand_pose};
+use super::skeleton::hand_pose;
 use super::{InputError, TrackingFrame};
-use crate::hand::{HandPose, Side};
+use crate::hand::{HandSample, Side};
 
 /// One hand's tracked samples, in time order.
 #[derive(Debug, Clone)]
 pub struct Track {
     /// The tracker's hand id.
     pub id: i64,
+    /// Which hand.
     pub side: Side,
-    /// `(time since the first frame in s, pose, grab, pinch)`.
-    samples: Vec<(f64, HandPose, Option<f32>, Option<f32>)>,
-}
-
-/// A hand's state at one instant of playback.
-#[derive(Debug, Clone, PartialEq)]
-pub struct HandSample {
-    pub pose: HandPose,
-    pub grab: Option<f32>,
-    pub pinch: Option<f32>,
+    /// `(time since the first frame in s, the hand then)`.
+    samples: Vec<(f64, HandSample)>,
 }
 
 /// Frames converted to world poses, ready to be sampled at any time.
 #[derive(Debug, Clone)]
 pub struct Playback {
+    /// One per tracker hand id, in order of first appearance.
     pub tracks: Vec<Track>,
     /// Time from the first to the last frame (s).
     pub duration: f64,
@@ -44,7 +38,12 @@ pub const DEFAULT_GRACE: f64 = 0.1;
 impl Playback {
     /// Converts every hand of every frame; any bad frame is an error naming
     /// the frame. Timestamps must not go backwards.
-    pub fn new(source: &str, frames: &[TrackingFrame], conversion: &Conversion, grace: f64) -> Result<Self, InputError> {
+    pub fn new(
+        source: &str,
+        frames: &[TrackingFrame],
+        conversion: &Conversion,
+        grace: f64,
+    ) -> Result<Self, InputError> {
         let fail = |frame: usize, field: String, reason: String| InputError {
             source_name: source.to_string(),
             frame: Some(frame),
@@ -56,18 +55,21 @@ impl Playback {
         let mut last = start;
         for (i, frame) in frames.iter().enumerate() {
             if frame.timestamp_us < last {
-                return Err(fail(i, "timestamp".into(), format!("goes backwards ({} after {last})", frame.timestamp_us)));
+                let why = format!("goes backwards ({} after {last})", frame.timestamp_us);
+                return Err(fail(i, "timestamp".into(), why));
             }
             last = frame.timestamp_us;
             let t = (frame.timestamp_us - start) as f64 * 1e-6;
             for (h, hand) in frame.hands.iter().enumerate() {
-                let pose = hand_pose(hand, conversion).map_err(|e| fail(i, format!("hands[{h}]"), e.to_string()))?;
-                pose.validate(0).map_err(|e| fail(i, format!("hands[{h}]"), e.to_string()))?;
+                let bad = |e: String| fail(i, format!("hands[{h}]"), e);
+                let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
+                pose.validate(0).map_err(|e| bad(e.to_string()))?;
                 let k = tracks.iter().position(|tr| tr.id == hand.id).unwrap_or_else(|| {
                     tracks.push(Track { id: hand.id, side: hand.side, samples: Vec::new() });
                     tracks.len() - 1
                 });
-                tracks[k].samples.push((t, pose, hand.grab, hand.pinch));
+                let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
+                tracks[k].samples.push((t, sample));
             }
         }
         Ok(Playback { tracks, duration: (last - start) as f64 * 1e-6, frames: frames.len(), grace })
@@ -75,22 +77,32 @@ impl Playback {
 
     /// The state of track `index` at time `t` (s), or `None` while untracked.
     pub fn sample(&self, index: usize, t: f64) -> Option<HandSample> {
-        let samples = &self.tracks.get(index)?.samples;
-        let after = samples.partition_point(|s| s.0 <= t);
-        let before = after.checked_sub(1)?;
-        let (t0, p0, g0, n0) = &samples[before];
-        let Some((t1, p1, g1, n1)) = samples.get(after) else {
-            // Past the hand's last sample: hold it only for an instant.
-            return (t - t0 <= 1e-9).then(|| HandSample { pose: p0.clone(), grab: *g0, pinch: *n0 });
-        };
-        if t1 - t0 > self.grace {
-            return None;
-        }
-        let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0) as f32;
-        let mix = |a: Option<f32>, b: Option<f32>| match (a, b) {
-            (Some(a), Some(b)) => Some(a + (b - a) * w),
-            (a, b) => a.or(b),
-        };
-        Some(HandSample { pose: blend(p0, p1, w), grab: mix(*g0, *g1), pinch: mix(*n0, *n1) })
+        interpolate(&self.tracks.get(index)?.samples, t, self.grace)
     }
+}
+
+/// A hand at time `t` (s) from its samples `(time, hand)` in time order:
+/// interpolated between the two around `t` if they are at most `grace`
+/// apart, else `None` (the hand was lost). Past the last sample the hand is
+/// held only for an instant.
+pub fn interpolate(samples: &[(f64, HandSample)], t: f64, grace: f64) -> Option<HandSample> {
+    let after = samples.partition_point(|s| s.0 <= t);
+    let before = after.checked_sub(1)?;
+    let (t0, s0) = &samples[before];
+    let Some((t1, s1)) = samples.get(after) else {
+        return (t - t0 <= 1e-9).then(|| s0.clone());
+    };
+    if t1 - t0 > grace {
+        return None;
+    }
+    let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0) as f32;
+    let mix = |a: Option<f32>, b: Option<f32>| match (a, b) {
+        (Some(a), Some(b)) => Some(a + (b - a) * w),
+        (a, b) => a.or(b),
+    };
+    Some(HandSample {
+        pose: s0.pose.lerp(&s1.pose, w),
+        grab: mix(s0.grab, s1.grab),
+        pinch: mix(s0.pinch, s1.pinch),
+    })
 }

@@ -2,7 +2,7 @@
 
 use super::TrackedHand;
 use super::convert::Conversion;
-use crate::hand::{Capsule, HandPose, Palm};
+use crate::hand::{HandPose, Palm};
 use glam::Vec3;
 
 /// Why a tracked hand could not become a pose.
@@ -70,22 +70,6 @@ pub fn hand_pose(hand: &TrackedHand, conversion: &Conversion) -> Result<HandPose
         }
     }
     Ok(pose)
-}
-
-/// Copies of a pose blended `t` of the way from `a` to `b` (joint by joint;
-/// the palm rotation by normalised lerp of the shortest arc).
-pub fn blend(a: &HandPose, b: &HandPose, t: f32) -> HandPose {
-    let mut out = a.clone();
-    out.palm.center = a.palm.center.lerp(b.palm.center, t);
-    out.palm.half_extents = a.palm.half_extents.lerp(b.palm.half_extents, t);
-    out.palm.rotation = a.palm.rotation.slerp(b.palm.rotation, t).normalize();
-    for (f, finger) in out.fingers.iter_mut().enumerate() {
-        for (p, bone) in finger.iter_mut().enumerate() {
-            let (x, y) = (&a.fingers[f][p], &b.fingers[f][p]);
-            *bone = Capsule { a: x.a.lerp(y.a, t), b: x.b.lerp(y.b, t), radius: x.radius + (y.radius - x.radius) * t };
-        }
-    }
-    out
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Grasp, lift and carry: the scripted demo scene, checked.
 
 use coulomb_hands::InteractionConfig;
-use coulomb_hands::scenes::GraspLiftCarry;
+use coulomb_hands::run::demo::GraspLiftCarry;
 
 #[test]
 fn cube_follows_the_hand_through_lift_and_turn_then_falls_when_opened() {
@@ -33,13 +33,14 @@ fn replays_are_bit_for_bit_deterministic() {
 
 #[test]
 fn a_recorded_session_replays_bit_for_bit_from_its_file() {
-    use coulomb_hands::session::{Session, object_states};
+    use coulomb_hands::output::session::{Session, object_states};
     use coulomb_hands::{InteractionWorld, ObjectDesc, Side, StaticDesc};
     use glam::Vec3;
     // Record the grasp-lift-carry script, including a fixture on the cube
     // until the grasp has closed.
     let script = GraspLiftCarry::new(InteractionConfig::default()).unwrap();
-    let mut world = InteractionWorld::new_recording(InteractionConfig::default()).unwrap();
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    Session::start(&mut world);
     world.add_static(&StaticDesc::ground(-script.half, 0.5)).unwrap();
     let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * script.half), 0.05, Vec3::ZERO)).unwrap();
     let hand = world.add_hand(Side::Right);
@@ -56,7 +57,7 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
         live.push(object_states(&world));
     }
     assert!(world.object_state(cube).unwrap().position.y > 0.15, "the recorded run lifted the cube");
-    let session = world.take_recording().unwrap();
+    let session = Session::take(&mut world).unwrap();
     assert_eq!(session.steps(), live.len());
 
     let path = std::env::temp_dir().join(format!("coulomb-hands-session-{}.json", std::process::id()));

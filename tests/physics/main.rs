@@ -14,6 +14,7 @@ mod safety;
 mod tilt;
 
 use coulomb_hands::hand::rig::HandRig;
+use coulomb_hands::run::drive::{Driver, PoseFn, StepView};
 use coulomb_hands::{Bone, Capsule, HandId, HandPose, InteractionWorld, Material, ObjectId, Side};
 use glam::{Quat, Vec3};
 
@@ -43,8 +44,8 @@ pub fn test_material(surface_friction: f32) -> Material {
     Material::custom("test", 0.5, 0.4, surface_friction)
 }
 
-/// Steps the world `seconds` long, setting `pose(t)` on `hand` each step,
-/// and calls `each(world, t)` after each step.
+/// Steps the world `seconds` long through the driver, posing `hand` with
+/// `pose(t)` each step, and calls `each(world, t)` after each step.
 pub fn run(
     world: &mut InteractionWorld,
     hand: HandId,
@@ -52,15 +53,15 @@ pub fn run(
     mut pose: impl FnMut(f32) -> HandPose,
     mut each: impl FnMut(&InteractionWorld, f32),
 ) {
-    let dt = world.config().dt;
-    let steps = (seconds / dt).round() as usize;
-    let t0 = world.time() as f32;
-    for i in 0..steps {
-        let t = t0 + i as f32 * dt;
-        world.set_hand_pose(hand, &pose(t)).expect("valid pose");
-        world.step();
-        each(world, t + dt);
-    }
+    let steps = (seconds / world.config().dt).round() as usize;
+    let side = world.hand_side(hand).expect("hand exists");
+    let mut driver = Driver::new(world);
+    driver.drive(hand, PoseFn::new(side, |t| Some(pose(t as f32)))).expect("hand exists");
+    let mut observe = |step: &StepView| {
+        each(step.world, step.t as f32);
+        Ok(())
+    };
+    driver.run(steps, &mut [&mut observe]).expect("valid poses");
 }
 
 pub fn position(world: &InteractionWorld, id: ObjectId) -> Vec3 {

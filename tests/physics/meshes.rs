@@ -2,7 +2,7 @@
 //! pawn, voxelized or split into convex parts, touched by a finger.
 
 use super::*;
-use coulomb_hands::mesh::{TriangleMesh, generate};
+use coulomb_hands::scene::mesh::{TriangleMesh, generate};
 use coulomb_hands::{ContactEventKind, InteractionConfig, MeshBody, MeshShape, ObjectDesc, ShapeDesc, StaticDesc};
 
 const INDEX_DISTAL: Bone = Bone::Finger(coulomb_hands::Finger::Index, coulomb_hands::Phalanx::Distal);

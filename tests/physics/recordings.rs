@@ -4,8 +4,10 @@
 use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::leap;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
-use coulomb_hands::replay::{replay, world_with_objects};
-use coulomb_hands::{InteractionConfig, ObjectDesc, WorldError};
+use coulomb_hands::run::drive::StepView;
+use coulomb_hands::run::observe::trace_line;
+use coulomb_hands::run::replay::{replay, world_with_objects};
+use coulomb_hands::{InteractionConfig, ObjectDesc};
 use glam::Vec3;
 use std::path::PathBuf;
 
@@ -70,12 +72,13 @@ fn two_handed_and_packed_replays_stay_finite_with_an_object_in_the_way() {
         let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.05, centre);
         let (mut world, _) = world_with_objects(InteractionConfig::default(), &[desc]).unwrap();
         let mut lines = 0;
-        let summary = replay::<WorldError>(name, &playback, &mut world, &[], |_, line| {
+        let mut each = |step: &StepView| {
+            let line = trace_line(step);
             lines += 1;
             assert!(line.objects.iter().all(|o| o.pos.iter().chain(&o.linvel).chain(&o.rot).all(|v| v.is_finite())));
             Ok(())
-        })
-        .unwrap();
+        };
+        let summary = replay(name, &playback, &mut world, &[], &mut [&mut each]).unwrap();
         assert!(summary.all_finite, "{name}");
         assert_eq!(lines, summary.steps);
         assert!(summary.contacts_begun > 0, "{name}: the hands never touched the box");
@@ -99,7 +102,7 @@ fn a_truncated_recording_is_an_error_naming_the_file() {
 /// and how far it fell from there by the end of the recording (m).
 fn hold_in_grasp(name: &str, object: &str, grasp: usize) -> (f64, f64, f32, f32) {
     use coulomb_hands::GammaMode;
-    use coulomb_hands::replay::place_at_grasp;
+    use coulomb_hands::run::replay::place_at_grasp;
     let rec = leap::load(&data(name)).unwrap();
     let playback = Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
     let config = InteractionConfig { gamma: GammaMode::Auto, ..InteractionConfig::default() };
@@ -107,7 +110,8 @@ fn hold_in_grasp(name: &str, object: &str, grasp: usize) -> (f64, f64, f32, f32)
     let (fixture, site) = place_at_grasp(&mut world, &playback, object.parse().unwrap(), grasp).unwrap();
     let mut reference = None;
     let (mut drift, mut held_y, mut end_y) = (0.0f32, 0.0f32, 0.0f32);
-    replay::<WorldError>(name, &playback, &mut world, &[fixture], |w, line| {
+    let mut each = |step: &StepView| {
+        let (w, line) = (step.world, trace_line(step));
         let pos = w.object_state(fixture.object).unwrap().position;
         end_y = pos.y;
         let Some(hand) = playback.sample(site.track, line.t) else { return Ok(()) };
@@ -118,8 +122,8 @@ fn hold_in_grasp(name: &str, object: &str, grasp: usize) -> (f64, f64, f32, f32)
             held_y = pos.y;
         }
         Ok(())
-    })
-    .unwrap();
+    };
+    replay(name, &playback, &mut world, &[fixture], &mut [&mut each]).unwrap();
     (site.closed_at, site.open_at, drift, held_y - end_y)
 }
 
@@ -212,7 +216,8 @@ fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
     world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.04), 0.2, centre)).unwrap();
     let mut ended_in_gap = false;
     let mut touching_in_short_gap = false;
-    replay::<WorldError>("gaps", &playback, &mut world, &[], |w, line| {
+    let mut each = |step: &StepView| {
+        let (w, line) = (step.world, trace_line(step));
         if (0.06..0.09).contains(&line.t) {
             touching_in_short_gap |= !w.contacts().is_empty();
         }
@@ -222,8 +227,8 @@ fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
             assert!(line.t < 0.995 || w.contacts().is_empty(), "no contacts while the hand is lost");
         }
         Ok(())
-    })
-    .unwrap();
+    };
+    replay("gaps", &playback, &mut world, &[], &mut [&mut each]).unwrap();
     assert!(touching_in_short_gap, "contacts stay through a bridged gap");
     assert!(ended_in_gap, "a lost hand releases its contacts");
 }
@@ -242,8 +247,8 @@ fn a_scene_file_puts_objects_in_the_replay() {
     let rec = leap::load(&data("three-claps.json.lz")).unwrap();
     let playback = Playback::new("claps", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
     let (mut world, _) = world_with_objects(InteractionConfig::default(), &[]).unwrap();
-    scene.add_to(&mut world).unwrap();
-    let summary = replay::<WorldError>("claps", &playback, &mut world, &[], |_, _| Ok(())).unwrap();
+    world.add_scene(&scene).unwrap();
+    let summary = replay("claps", &playback, &mut world, &[], &mut []).unwrap();
     assert_eq!(summary.objects.len(), 1);
     assert!(summary.all_finite);
     // The clapping hands sweep through the cube on its table and move it.
@@ -252,19 +257,20 @@ fn a_scene_file_puts_objects_in_the_replay() {
 
 #[test]
 fn a_recorded_fist_replay_with_its_fixture_release_replays_bit_for_bit() {
-    use coulomb_hands::replay::{place_at_grasp, replay_world};
-    use coulomb_hands::session::{Call, object_states};
+    use coulomb_hands::output::session::{Session, object_states};
+    use coulomb_hands::pipeline::Call;
+    use coulomb_hands::run::replay::{place_at_grasp, replay_world};
     let rec = leap::load(&data("grab.json.lz")).unwrap();
     let playback = Playback::new("grab", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
     let mut world = replay_world(InteractionConfig::default(), true).unwrap();
     let (fixture, _) = place_at_grasp(&mut world, &playback, "box:0.045:0.05".parse().unwrap(), 0).unwrap();
     let mut live = Vec::new();
-    replay::<WorldError>("grab", &playback, &mut world, &[fixture], |w, _| {
-        live.push(object_states(w));
+    let mut each = |step: &StepView| {
+        live.push(object_states(step.world));
         Ok(())
-    })
-    .unwrap();
-    let session = world.take_recording().unwrap();
+    };
+    replay("grab", &playback, &mut world, &[fixture], &mut [&mut each]).unwrap();
+    let session = Session::take(&mut world).unwrap();
     // The fixture's release, re-seat included, is part of the session.
     assert!(session.calls.iter().any(|c| matches!(c, Call::SetObjectLocked(_, false))));
     assert!(session.calls.iter().any(|c| matches!(c, Call::ReseatContacts(_))));

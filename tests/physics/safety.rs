@@ -2,7 +2,7 @@
 //! not ring, bad input never reaches the physics.
 
 use super::*;
-use coulomb_hands::friction::force_cap;
+use coulomb_hands::friction::ForceCap;
 use coulomb_hands::{
     Finger, InteractionConfig, KineticFriction, ObjectDesc, Palm, Phalanx, PoseError, StaticDesc, WorldError,
 };
@@ -57,7 +57,7 @@ fn the_force_cap_bounds_a_deep_contact() {
     let config = InteractionConfig { max_penetration_speed: None, damping_ratio: None, ..InteractionConfig::default() };
     let (_, force) = deep_glitch(config);
     let diameter = GLITCH_BOX * 3f32.sqrt();
-    let cap = force_cap(400.0, diameter);
+    let cap = ForceCap::for_diameter(diameter).normal_force(400.0);
     // Normal ≤ cap and friction ≤ μ_st·cap (wood 0.46).
     assert!(force <= cap * (1.0 + 0.46f32.powi(2)).sqrt() * 1.001, "{force} N > cap {cap} N");
     let uncapped = InteractionConfig { force_cap: false, ..config };

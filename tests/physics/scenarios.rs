@@ -2,16 +2,18 @@
 //! must pass its own checks, and changing the physics that makes it work
 //! must make it fail.
 
-use coulomb_hands::WorldError;
-use coulomb_hands::scenario::{Scenario, ScenarioReport, shipped};
+use coulomb_hands::run::drive::StepView;
+use coulomb_hands::run::observe::trace_line;
+use coulomb_hands::run::scenario::{Scenario, ScenarioReport, shipped};
 use std::path::Path;
 
 fn run(s: &Scenario) -> ScenarioReport {
-    s.run::<WorldError>(|_, line| {
+    let mut finite = |step: &StepView| {
+        let line = trace_line(step);
         assert!(line.is_finite(), "{}: non-finite state at t = {}", s.name, line.t);
         Ok(())
-    })
-    .unwrap()
+    };
+    s.run(&mut [&mut finite]).unwrap()
 }
 
 fn table(r: &ScenarioReport) -> String {
@@ -37,7 +39,7 @@ fn variant(name: &str, from: &str, to: &str) -> ScenarioReport {
     run(&Scenario::parse(name, &text.replace(from, to), Path::new(".")).unwrap())
 }
 
-fn check<'a>(r: &'a ScenarioReport, name: &str) -> &'a coulomb_hands::scenario::check::CheckResult {
+fn check<'a>(r: &'a ScenarioReport, name: &str) -> &'a coulomb_hands::run::scenario::check::CheckResult {
     r.checks.iter().find(|c| c.name.starts_with(name)).unwrap()
 }
 

@@ -2,9 +2,28 @@
 //! between, on the parametric [`HandRig`].
 
 use crate::hand::rig::{Articulation, HandRig};
-use crate::hand::{HandPose, Side};
-use crate::scenes::smoothstep;
+use crate::hand::{HandPose, HandSample, Side};
+use crate::run::RunError;
+use crate::run::drive::HandSource;
 use glam::{EulerRot, Quat, Vec3};
+
+/// Smooth 0→1 ramp of `t` over `[t0, t1]` (zero slope at both ends).
+pub fn smoothstep(t0: f32, t1: f32, t: f32) -> f32 {
+    let x = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
+    x * x * (3.0 - 2.0 * x)
+}
+
+/// A bad keyframe: which key, which field, and why.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("keys{}: {reason}", match key { Some(k) => format!("[{k}].{field}"), None => String::new() })]
+pub struct KeyError {
+    /// The key's index, or `None` for the list as a whole.
+    pub key: Option<usize>,
+    /// The field, e.g. `t` or `curl`.
+    pub field: &'static str,
+    /// What is wrong with it.
+    pub reason: String,
+}
 
 /// Flexion of each finger in [0, 1] (0 straight, 1 a fist), thumb first,
 /// or one number for all five.
@@ -95,18 +114,19 @@ impl Script {
     /// Checks the keys: at least one, times finite, non-negative and
     /// increasing, positions and angles finite, flexion and opposition in
     /// [0, 1]. The error names the key and the field.
-    pub fn new(side: Side, keys: Vec<Key>) -> Result<Script, String> {
+    pub fn new(side: Side, keys: Vec<Key>) -> Result<Script, KeyError> {
         Self::with_rig(HandRig::adult(side), keys)
     }
 
     /// As [`Self::new`] with a given hand.
-    pub fn with_rig(rig: HandRig, keys: Vec<Key>) -> Result<Script, String> {
+    pub fn with_rig(rig: HandRig, keys: Vec<Key>) -> Result<Script, KeyError> {
         if keys.is_empty() {
-            return Err("keys: at least one keyframe is needed".into());
+            let reason = "at least one keyframe is needed".to_string();
+            return Err(KeyError { key: None, field: "", reason });
         }
         let mut previous = f32::NEG_INFINITY;
         for (i, k) in keys.iter().enumerate() {
-            let at = |field: &str, why: String| Err(format!("keys[{i}].{field}: {why}"));
+            let at = |field, reason| Err(KeyError { key: Some(i), field, reason });
             if !(k.t.is_finite() && k.t >= 0.0) {
                 return at("t", format!("must be a finite time ≥ 0 s, got {}", k.t));
             }
@@ -163,6 +183,17 @@ impl Script {
     }
 }
 
+impl HandSource for &Script {
+    fn side(&self) -> Side {
+        self.rig.side
+    }
+
+    /// Keys are timed in f32 seconds.
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        Ok(Some(HandSample::pose(self.pose(t as f32))))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -198,13 +229,13 @@ mod tests {
 
     #[test]
     fn bad_keys_name_the_key_and_field() {
-        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 0.0), key(0.0, 0.2, 0.0)]).unwrap_err();
+        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 0.0), key(0.0, 0.2, 0.0)]).unwrap_err().to_string();
         assert!(e.starts_with("keys[1].t"), "{e}");
-        let e = Script::new(Side::Left, vec![key(0.0, f32::NAN, 0.0)]).unwrap_err();
+        let e = Script::new(Side::Left, vec![key(0.0, f32::NAN, 0.0)]).unwrap_err().to_string();
         assert!(e.starts_with("keys[0].palm"), "{e}");
-        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 1.5)]).unwrap_err();
+        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 1.5)]).unwrap_err().to_string();
         assert!(e.starts_with("keys[0].curl"), "{e}");
-        let e = Script::new(Side::Left, vec![Key { knuckle: Some(Curl::Each([0.0, 0.5, -0.1, 0.0, 0.0])), ..key(0.0, 0.1, 0.0) }]).unwrap_err();
+        let e = Script::new(Side::Left, vec![Key { knuckle: Some(Curl::Each([0.0, 0.5, -0.1, 0.0, 0.0])), ..key(0.0, 0.1, 0.0) }]).unwrap_err().to_string();
         assert!(e.starts_with("keys[0].knuckle"), "{e}");
         assert!(Script::new(Side::Left, vec![]).is_err());
     }

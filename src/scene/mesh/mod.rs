@@ -15,47 +15,123 @@ use std::path::Path;
 /// An indexed triangle mesh (metres, counter-clockwise outward faces).
 #[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct TriangleMesh {
+    /// Vertex positions (m).
     pub vertices: Vec<Vec3>,
+    /// Vertex indices, three per triangle.
     pub triangles: Vec<[u32; 3]>,
 }
 
-/// Why a mesh file was rejected.
+/// Why a mesh file was rejected: the file, and its [`MeshProblem`].
 pub type MeshError = crate::FileError;
+
+/// What is wrong with a mesh, or with making a body of it.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MeshProblem {
+    /// The file's extension is none of the formats read.
+    #[error("unknown mesh format \".{0}\" (obj, stl, gltf or glb)")]
+    UnknownFormat(String),
+    /// The file could not be read or parsed; the reader's own message.
+    #[error("{0}")]
+    Unreadable(String),
+    /// Nothing to collide with.
+    #[error("the mesh has no triangles")]
+    NoTriangles,
+    /// A vertex is NaN or infinite.
+    #[error("vertex {index} is not finite: {vertex:?}")]
+    NonFiniteVertex {
+        /// Its index.
+        index: usize,
+        /// Its position.
+        vertex: Vec3,
+    },
+    /// A triangle names a vertex that does not exist.
+    #[error("triangle {triangle} refers to a vertex beyond the {vertices} there are")]
+    IndexOutOfRange {
+        /// The triangle's index.
+        triangle: usize,
+        /// How many vertices there are.
+        vertices: u32,
+    },
+    /// The mesh is flat along some axis, so it has no inside.
+    #[error("the mesh has no volume: it is flat ({size:?} across)")]
+    Flat {
+        /// Its bounding box's size (m).
+        size: Vec3,
+    },
+    /// The voxel size is not positive, or would make too many cells.
+    #[error("voxel size {voxel} m is not positive or too small for a mesh {size:?} m across")]
+    VoxelSize {
+        /// The voxel size asked for (m).
+        voxel: f32,
+        /// The mesh's bounding box's size (m).
+        size: Vec3,
+    },
+    /// No voxel centre is inside the mesh.
+    #[error("voxel size {voxel} m leaves no voxel inside the mesh")]
+    NoVoxels {
+        /// The voxel size asked for (m).
+        voxel: f32,
+    },
+    /// More boxes than allowed.
+    #[error("voxel size {voxel} m gives {boxes} boxes, more than {max}: use larger voxels")]
+    TooManyVoxels {
+        /// The voxel size asked for (m).
+        voxel: f32,
+        /// The boxes it would give.
+        boxes: usize,
+        /// The most allowed.
+        max: usize,
+    },
+}
+
+impl From<String> for MeshProblem {
+    fn from(reason: String) -> Self {
+        MeshProblem::Unreadable(reason)
+    }
+}
+
+impl From<&str> for MeshProblem {
+    fn from(reason: &str) -> Self {
+        MeshProblem::Unreadable(reason.to_string())
+    }
+}
 
 impl TriangleMesh {
     /// Loads `.obj`, `.stl`, `.gltf` or `.glb` (all meshes of the file, in
     /// its units), then [`Self::check`]s it.
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
-        let fail = |reason: String| MeshError::new(&file, reason);
+        let fail = |problem: MeshProblem| MeshError::new(&file, problem.to_string());
         let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).unwrap_or_default();
         let mesh = match ext.as_str() {
-            "obj" => load_obj(path).map_err(fail)?,
-            "stl" => load_stl(path).map_err(fail)?,
-            "gltf" | "glb" => load_gltf(path).map_err(fail)?,
-            other => return Err(fail(format!("unknown mesh format \".{other}\" (obj, stl, gltf or glb)"))),
-        };
+            "obj" => load_obj(path),
+            "stl" => load_stl(path),
+            "gltf" | "glb" => load_gltf(path),
+            other => return Err(fail(MeshProblem::UnknownFormat(other.to_string()))),
+        }
+        .map_err(fail)?;
         mesh.check().map_err(fail)?;
         Ok(mesh)
     }
 
     /// A usable solid: at least one triangle, finite vertices, indices in
     /// range, and a non-zero volume (not flat along any axis).
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), MeshProblem> {
         if self.triangles.is_empty() {
-            return Err("the mesh has no triangles".into());
+            return Err(MeshProblem::NoTriangles);
         }
-        if let Some(i) = self.vertices.iter().position(|v| !v.is_finite()) {
-            return Err(format!("vertex {i} is not finite: {:?}", self.vertices[i]));
+        if let Some(index) = self.vertices.iter().position(|v| !v.is_finite()) {
+            return Err(MeshProblem::NonFiniteVertex { index, vertex: self.vertices[index] });
         }
-        let n = self.vertices.len() as u32;
-        if let Some(i) = self.triangles.iter().position(|t| t.iter().any(|&k| k >= n)) {
-            return Err(format!("triangle {i} refers to a vertex beyond the {n} there are"));
+        let vertices = self.vertices.len() as u32;
+        if let Some(triangle) = self.triangles.iter().position(|t| t.iter().any(|&k| k >= vertices))
+        {
+            return Err(MeshProblem::IndexOutOfRange { triangle, vertices });
         }
         let (lo, hi) = self.bounds();
         let size = hi - lo;
         if size.min_element() <= 1e-6 * size.max_element().max(f32::MIN_POSITIVE) {
-            return Err(format!("the mesh has no volume: it is flat ({size:?} across)"));
+            return Err(MeshProblem::Flat { size });
         }
         Ok(())
     }
@@ -93,14 +169,18 @@ impl TriangleMesh {
     /// on each side. A mesh too broken to tell inside from outside keeps all
     /// of them. Voxels are merged into runs along x, so a row is one box.
     /// Returns (centre, half extents) per box, at most `max_boxes` of them.
-    pub fn voxel_boxes(&self, voxel: f32, max_boxes: usize) -> Result<Vec<(Vec3, Vec3)>, String> {
+    pub fn voxel_boxes(
+        &self,
+        voxel: f32,
+        max_boxes: usize,
+    ) -> Result<Vec<(Vec3, Vec3)>, MeshProblem> {
         use rapier3d::parry::query::PointQuery;
         use rapier3d::parry::shape::{TriMesh, TriMeshFlags};
         use rapier3d::parry::transformation::voxelization::{FillMode, VoxelSet};
         let (lo, hi) = self.bounds();
         let cells = ((hi - lo) / voxel).ceil();
         if !(voxel.is_finite() && voxel > 0.0) || cells.x * cells.y * cells.z > 4.0e6 {
-            return Err(format!("voxel size {voxel} m is not positive or too small for a mesh {:?} m across", hi - lo));
+            return Err(MeshProblem::VoxelSize { voxel, size: hi - lo });
         }
         let set = VoxelSet::with_voxel_size(&self.vertices, &self.triangles, voxel, FillMode::default(), false);
         let mut cells: Vec<[i32; 3]> = set.voxels().iter().map(|v| v.coords.to_array()).collect();
@@ -125,16 +205,16 @@ impl TriangleMesh {
             i += 1;
         }
         if boxes.is_empty() {
-            return Err(format!("voxel size {voxel} m leaves no voxel inside the mesh"));
+            return Err(MeshProblem::NoVoxels { voxel });
         }
         if boxes.len() > max_boxes {
-            return Err(format!("voxel size {voxel} m gives {} boxes, more than {max_boxes}: use larger voxels", boxes.len()));
+            return Err(MeshProblem::TooManyVoxels { voxel, boxes: boxes.len(), max: max_boxes });
         }
         Ok(boxes)
     }
 }
 
-fn load_obj(path: &Path) -> Result<TriangleMesh, String> {
+fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
     let (models, _) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
     let mut mesh = TriangleMesh::default();
@@ -147,7 +227,7 @@ fn load_obj(path: &Path) -> Result<TriangleMesh, String> {
     Ok(mesh)
 }
 
-fn load_stl(path: &Path) -> Result<TriangleMesh, String> {
+fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     let mut file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     let stl = stl_io::read_stl(&mut file).map_err(|e| format!("not a readable STL file: {e}"))?;
     Ok(TriangleMesh {
@@ -159,7 +239,7 @@ fn load_stl(path: &Path) -> Result<TriangleMesh, String> {
 /// Every mesh primitive of the default scene (or of all root nodes), with
 /// the node transforms applied. Buffers may be the GLB's binary chunk,
 /// files next to the `.gltf`, or base64 data URIs.
-fn load_gltf(path: &Path) -> Result<TriangleMesh, String> {
+fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
     let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
     let gltf = gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;

@@ -1,6 +1,9 @@
 //! A scenario's checks: what is measured on the run's history, and the
 //! bound it must meet.
 
+use crate::pipeline::InteractionWorld;
+use crate::run::RunError;
+use crate::run::drive::{Observer, StepView};
 use glam::{Quat, Vec3};
 
 /// One check of a scenario file: a measure and its bound (`min`, `max` or
@@ -74,6 +77,12 @@ pub struct History {
 }
 
 impl History {
+    /// An empty history of `world`'s objects.
+    pub fn new(world: &InteractionWorld) -> History {
+        let names = world.object_ids().map(|id| world.object_name(id).unwrap_or("").to_string());
+        History { dt: world.config().dt, names: names.collect(), ..History::default() }
+    }
+
     /// The step whose state is the one at time `t` (clamped to the run).
     fn step(&self, t: f32) -> usize {
         ((t / self.dt).round().max(1.0) as usize - 1).min(self.poses.len().saturating_sub(1))
@@ -86,6 +95,23 @@ impl History {
     fn steps(&self, from: f32, to: Option<f32>) -> std::ops::RangeInclusive<usize> {
         self.step(from)..=self.step(to.unwrap_or(self.end()))
     }
+}
+
+/// What is wrong with a check, found before a run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    /// Neither `min` nor `max`.
+    #[error("needs a bound: min, max or both")]
+    NoBound,
+    /// A bound is NaN or infinite.
+    #[error("bounds must be finite")]
+    BoundNotFinite,
+    /// An axis that is not a unit vector.
+    #[error("axis must be a unit vector, got {0:?}")]
+    Axis(Vec3),
+    /// A path of fewer than two finite points.
+    #[error("path: needs at least two finite [x, z] points")]
+    Path,
 }
 
 /// The outcome of one check.
@@ -120,22 +146,26 @@ impl Check {
 
     /// Checks what can be checked without a run: a bound, finite numbers,
     /// unit axes, a path of at least two points.
-    pub(crate) fn validate(&self) -> Result<(), String> {
+    pub(crate) fn validate(&self) -> Result<(), CheckError> {
         if self.min.is_none() && self.max.is_none() {
-            return Err("needs a bound: min, max or both".into());
+            return Err(CheckError::NoBound);
         }
         if self.min.iter().chain(&self.max).any(|b| !b.is_finite()) {
-            return Err("bounds must be finite".into());
+            return Err(CheckError::BoundNotFinite);
         }
         let axis = match &self.measure {
             Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
-            Measure::PathDeviation { path, .. } if path.len() < 2 || path.iter().flatten().any(|v| !v.is_finite()) => {
-                return Err("path: needs at least two finite [x, z] points".into());
+            Measure::PathDeviation { path, .. }
+                if path.len() < 2 || path.iter().flatten().any(|v| !v.is_finite()) =>
+            {
+                return Err(CheckError::Path);
             }
             _ => None,
         };
         match axis {
-            Some(a) if !(a.is_finite() && (a.length() - 1.0).abs() < 1e-3) => Err(format!("axis must be a unit vector, got {a:?}")),
+            Some(a) if !(a.is_finite() && (a.length() - 1.0).abs() < 1e-3) => {
+                Err(CheckError::Axis(a))
+            }
             _ => Ok(()),
         }
     }
@@ -224,6 +254,32 @@ impl Check {
     }
 }
 
+impl Observer for History {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let world = step.world;
+        let objects = world.object_count();
+        let mut poses = Vec::with_capacity(objects);
+        let mut speeds = Vec::with_capacity(objects);
+        for id in world.object_ids() {
+            let s = world.object_state(id)?;
+            poses.push((s.position, s.rotation));
+            speeds.push(s.linvel.length());
+        }
+        let mut contacts = vec![0u32; objects];
+        for c in world.contacts() {
+            contacts[c.object.0 as usize] += 1;
+        }
+        let palm = |h: &crate::run::drive::HandFrame| {
+            h.sample.as_ref().map(|s| (s.pose.palm.center, s.pose.palm.rotation))
+        };
+        self.poses.push(poses);
+        self.speeds.push(speeds);
+        self.contacts.push(contacts);
+        self.palms.push(step.hands.iter().map(palm).collect());
+        Ok(())
+    }
+}
+
 /// Horizontal (x–z) distance from `p` to the polyline through `path`.
 fn distance_to_path(p: Vec3, path: &[[f32; 2]]) -> f32 {
     let q = glam::Vec2::new(p.x, p.z);
@@ -277,6 +333,6 @@ mod tests {
         assert!(check(m.clone(), None, None).validate().is_err());
         assert!(check(m, Some(0.0), None).validate().is_ok());
         let d = Measure::Displacement { object: "box".into(), from: 0.0, to: None, axis: Some(Vec3::new(1.0, 1.0, 0.0)) };
-        assert!(check(d, Some(0.0), None).validate().unwrap_err().contains("unit"));
+        assert!(check(d, Some(0.0), None).validate().unwrap_err().to_string().contains("unit"));
     }
 }

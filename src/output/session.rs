@@ -2,37 +2,24 @@
 //! hands, poses, fixtures, steps) to a file, and replaying it. Replays are
 //! deterministic: the same file gives bit-identical object trajectories.
 //!
-//! Start one with [`crate::InteractionWorld::new_recording`], take it with
-//! [`crate::InteractionWorld::take_recording`]. Changes made directly
-//! through `physics_mut()` are not recorded.
+//! A [`Session`] is the world's [`Recorder`]: start one with
+//! [`Session::start`] on a new world, take it back with [`Session::take`].
+//! Changes made directly through `physics_mut()` are not recorded.
 
-use crate::hand::{HandPose, Side};
-use crate::object::{ObjectDesc, ObjectId, StaticDesc};
-use crate::pipeline::{HandId, InteractionConfig, InteractionWorld, ObjectState, WorldError};
+use crate::hand::HandId;
+use crate::pipeline::{Call, InteractionConfig, InteractionWorld, ObjectState, Recorder, WorldError};
+use crate::scene::ObjectId;
 use std::path::Path;
 
 /// The file's format marker.
 pub const FORMAT: &str = "coulomb-hands-session/1";
-
-/// One recorded call on the world.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Call {
-    AddStatic(StaticDesc),
-    AddObject(ObjectDesc),
-    AddHand(Side),
-    SetHandPose(u32, Box<HandPose>),
-    ClearHandPose(u32),
-    SetObjectLocked(u32, bool),
-    ReseatContacts(u32),
-    Step,
-}
 
 /// A recorded session.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Session {
     /// Always [`FORMAT`].
     pub format: String,
+    /// The world's config.
     pub config: InteractionConfig,
     /// The calls, in order.
     pub calls: Vec<Call>,
@@ -41,15 +28,46 @@ pub struct Session {
 /// Why a session file could not be read, written or replayed.
 #[derive(Debug, thiserror::Error)]
 pub enum SessionError {
+    /// The file could not be read or written, or is not a session.
     #[error("{path}: {reason}")]
-    File { path: String, reason: String },
+    File {
+        /// The file.
+        path: String,
+        /// What went wrong.
+        reason: String,
+    },
+    /// A recorded call failed on replay.
     #[error("session call {call}: {source}")]
-    Replay { call: usize, source: WorldError },
+    Replay {
+        /// Its index in [`Session::calls`].
+        call: usize,
+        /// The world's error.
+        source: WorldError,
+    },
+}
+
+impl Recorder for Session {
+    fn record(&mut self, call: &Call) {
+        self.calls.push(call.clone());
+    }
 }
 
 impl Session {
+    /// An empty session of a world with this config.
     pub fn new(config: InteractionConfig) -> Self {
         Session { format: FORMAT.to_string(), config, calls: Vec::new() }
+    }
+
+    /// Records every later call on `world`. Start it on a new world: calls
+    /// made before are not in the session.
+    pub fn start(world: &mut InteractionWorld) {
+        world.set_recorder(Box::new(Session::new(*world.config())));
+    }
+
+    /// Stops recording on `world` and returns the session, if it was
+    /// recording one.
+    pub fn take(world: &mut InteractionWorld) -> Option<Session> {
+        world.take_recorder::<Session>()
     }
 
     /// Number of recorded steps.
@@ -59,8 +77,12 @@ impl Session {
 
     /// Replays every call into a fresh world; `each` sees the world after
     /// each step. Returns the final world.
-    pub fn replay(&self, mut each: impl FnMut(&InteractionWorld)) -> Result<InteractionWorld, SessionError> {
-        let mut world = InteractionWorld::new(self.config).map_err(|source| SessionError::Replay { call: 0, source })?;
+    pub fn replay(
+        &self,
+        mut each: impl FnMut(&InteractionWorld),
+    ) -> Result<InteractionWorld, SessionError> {
+        let mut world = InteractionWorld::new(self.config)
+            .map_err(|source| SessionError::Replay { call: 0, source })?;
         for (i, call) in self.calls.iter().enumerate() {
             let fail = |source| SessionError::Replay { call: i, source };
             match call {
@@ -69,7 +91,9 @@ impl Session {
                 Call::AddHand(side) => drop(world.add_hand(*side)),
                 Call::SetHandPose(h, pose) => world.set_hand_pose(HandId(*h), pose).map_err(fail)?,
                 Call::ClearHandPose(h) => world.clear_hand_pose(HandId(*h)).map_err(fail)?,
-                Call::SetObjectLocked(o, locked) => world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?,
+                Call::SetObjectLocked(o, locked) => {
+                    world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?
+                }
                 Call::ReseatContacts(o) => world.reseat_contacts(ObjectId(*o)).map_err(fail)?,
                 Call::Step => {
                     world.step();
@@ -80,17 +104,21 @@ impl Session {
         Ok(world)
     }
 
+    /// Writes the session as JSON.
     pub fn save(&self, path: &Path) -> Result<(), SessionError> {
-        let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
+        let fail =
+            |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = serde_json::to_string(self).map_err(|e| fail(e.to_string()))?;
         std::fs::write(path, text).map_err(|e| fail(e.to_string()))
     }
 
+    /// Reads a session file written by [`Self::save`].
     pub fn load(path: &Path) -> Result<Session, SessionError> {
-        let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
+        let fail =
+            |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
-        let session: Session =
-            serde_json::from_str(&text).map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+        let session: Session = serde_json::from_str(&text)
+            .map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
         if session.format != FORMAT {
             return Err(fail(format!("format is \"{}\", expected \"{FORMAT}\"", session.format)));
         }
@@ -105,5 +133,5 @@ impl Session {
 
 /// The states of all objects, in id order.
 pub fn object_states(world: &InteractionWorld) -> Vec<ObjectState> {
-    (0..world.object_count() as u32).filter_map(|i| world.object_state(ObjectId(i)).ok()).collect()
+    world.object_ids().filter_map(|id| world.object_state(id).ok()).collect()
 }

@@ -1,7 +1,7 @@
 //! Scenarios: the thesis's interaction catalogue (Ch. 4) as files that run
 //! headlessly and check their own outcome.
 //!
-//! A scenario file (JSON) holds a [scene](crate::scene), the hands that act
+//! A scenario file (JSON) holds a [scene](crate::scene::file), the hands that act
 //! in it, and checks with stated bounds:
 //!
 //! ```json
@@ -40,12 +40,16 @@
 pub mod check;
 pub mod script;
 
+use super::RunError;
+use super::drive::{self, Driver, HandSource, Observer, RecordedHand};
+use crate::FileError;
 use crate::hand::Side;
+use crate::hand::rig::HandRig;
 use crate::input::convert::Conversion;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
-use crate::pipeline::{HandId, InteractionConfig, InteractionWorld, WorldError};
-use crate::replay::{TraceHand, TraceLine};
-use crate::scene::{Scene, SceneEntry};
+use crate::pipeline::{InteractionConfig, InteractionWorld};
+use crate::scene::Scene;
+use crate::scene::file::SceneEntry;
 use check::{Check, CheckResult, History};
 use glam::Vec3;
 use script::{Key, Script};
@@ -55,10 +59,27 @@ use std::path::{Path, PathBuf};
 pub fn shipped() -> &'static [(&'static str, &'static str)] {
     macro_rules! shipped {
         ($($name:literal),* $(,)?) => {
-            &[$(($name, include_str!(concat!("../../scenarios/", $name, ".json")))),*]
+            &[$(($name, include_str!(concat!("../../../scenarios/", $name, ".json")))),*]
         };
     }
-    shipped!["push", "pull", "grasp-lift", "palmar-grasp", "motion-control", "handover", "two-hand-balance", "spin-one-hand", "spin-two-hands", "tool-knock-tower", "jenga-one-hand", "jenga-two-hands", "flat-hand-lift", "catch", "slide-slippery", "tilt-wooden"]
+    shipped![
+        "push",
+        "pull",
+        "grasp-lift",
+        "palmar-grasp",
+        "motion-control",
+        "handover",
+        "two-hand-balance",
+        "spin-one-hand",
+        "spin-two-hands",
+        "tool-knock-tower",
+        "jenga-one-hand",
+        "jenga-two-hands",
+        "flat-hand-lift",
+        "catch",
+        "slide-slippery",
+        "tilt-wooden",
+    ]
 }
 
 #[derive(Debug, Clone, serde::Deserialize)]
@@ -95,18 +116,28 @@ fn one() -> f32 {
     1.0
 }
 
-/// Where a hand's poses come from.
+/// Where a scenario hand's poses come from.
 #[derive(Debug, Clone)]
-pub enum HandSource {
+pub enum ScenarioHand {
+    /// Keyframes on the rig.
     Script(Script),
-    Recording { playback: Box<Playback>, track: usize },
+    /// One hand of a Leap recording.
+    Recording {
+        /// The recording, converted.
+        playback: Box<Playback>,
+        /// Which of its tracks.
+        track: usize,
+    },
 }
 
-impl HandSource {
-    fn side(&self) -> Side {
+impl ScenarioHand {
+    /// This hand as the driver's source.
+    pub fn source(&self) -> Box<dyn HandSource + '_> {
         match self {
-            HandSource::Script(s) => s.rig.side,
-            HandSource::Recording { playback, track } => playback.tracks[*track].side,
+            ScenarioHand::Script(s) => Box::new(s),
+            ScenarioHand::Recording { playback, track } => {
+                Box::new(RecordedHand { playback, track: *track })
+            }
         }
     }
 }
@@ -114,24 +145,33 @@ impl HandSource {
 /// A checked scenario, ready to run.
 #[derive(Debug, Clone)]
 pub struct Scenario {
+    /// Its name.
     pub name: String,
+    /// What it shows, in a sentence or two.
     pub description: String,
     /// Simulated length (s).
     pub duration: f32,
+    /// The world's config, with the scene's gravity.
     pub config: InteractionConfig,
+    /// What is in the world.
     pub scene: Scene,
-    pub hands: Vec<HandSource>,
+    /// The hands, in file order.
+    pub hands: Vec<ScenarioHand>,
+    /// What must hold of the run.
     pub checks: Vec<Check>,
 }
 
 /// Why a scenario could not be loaded; names the file and where.
-pub type ScenarioError = crate::FileError;
+pub type ScenarioError = FileError;
 
 /// The outcome of a run.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ScenarioReport {
+    /// The scenario's name.
     pub name: String,
+    /// Whether every check passed.
     pub passed: bool,
+    /// Each check's value and bound.
     pub checks: Vec<CheckResult>,
 }
 
@@ -148,12 +188,14 @@ impl Scenario {
                     e
                 } else {
                     let names: Vec<&str> = shipped().iter().map(|s| s.0).collect();
-                    ScenarioError::new(name_or_file, format!("no such file, nor a shipped scenario ({})", names.join(", ")))
+                    let why = format!("no such file, nor a shipped scenario ({})", names.join(", "));
+                    ScenarioError::new(name_or_file, why)
                 }
             }),
         }
     }
 
+    /// Reads and checks a scenario file.
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         let text = ScenarioError::read(path)?;
         Self::parse(&path.display().to_string(), &text, path.parent().unwrap_or(Path::new(".")))
@@ -165,25 +207,22 @@ impl Scenario {
         let fail = |reason: String| ScenarioError::new(file, reason);
         let entry: ScenarioEntry = ScenarioError::json(file, text)?;
         if !(entry.duration.is_finite() && entry.duration > 0.0) {
-            return Err(fail(format!("duration: must be a positive number of seconds, got {}", entry.duration)));
+            let d = entry.duration;
+            return Err(fail(format!("duration: must be a positive number of seconds, got {d}")));
         }
         let scene = Scene::from_entry(file, entry.scene, dir)?;
-        let config = scene.config(entry.config);
+        let config = entry.config.with_scene(&scene);
         config.validate().map_err(|e| fail(format!("config: {e}")))?;
         let hands = entry
             .hands
             .into_iter()
             .enumerate()
-            .map(|(i, h)| hand_source(h, dir).map_err(|e| fail(format!("hands[{i}].{e}"))))
+            .map(|(i, h)| scenario_hand(h, dir).map_err(|e| fail(format!("hands[{i}].{e}"))))
             .collect::<Result<Vec<_>, _>>()?;
-        let mut names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
-        if !scene.towers.is_empty() {
-            use crate::scenes::{TOWER_LEVELS, TOWER_SLOTS, tower_block_name};
-            names.extend((0..TOWER_LEVELS).flat_map(|l| (0..TOWER_SLOTS).map(move |s| tower_block_name(l, s))));
-        }
+        let names = scene.object_names();
         for (i, c) in entry.checks.iter().enumerate() {
             let at = |why: String| fail(format!("checks[{i}] '{}': {why}", c.name));
-            c.validate().map_err(at)?;
+            c.validate().map_err(|e| at(e.to_string()))?;
             let (objects, hand) = c.references();
             if let Some(o) = objects.iter().find(|o| !names.iter().any(|n| n == *o)) {
                 return Err(at(format!("no object named '{o}' in the scene")));
@@ -195,113 +234,91 @@ impl Scenario {
         if entry.checks.is_empty() {
             return Err(fail("checks: a scenario needs at least one check".into()));
         }
-        Ok(Scenario { name: entry.name, description: entry.description, duration: entry.duration, config, scene, hands, checks: entry.checks })
+        let (name, description, duration) = (entry.name, entry.description, entry.duration);
+        Ok(Scenario { name, description, duration, config, scene, hands, checks: entry.checks })
     }
 
-    /// Runs the scenario, calling `each` with the world and its trace line
-    /// after every step, then evaluates the checks.
-    pub fn run<E: From<WorldError>>(
-        &self,
-        mut each: impl FnMut(&InteractionWorld, &TraceLine) -> Result<(), E>,
-    ) -> Result<ScenarioReport, E> {
+    /// Runs the scenario, showing every step to `observers` too, then
+    /// evaluates the checks.
+    pub fn run(&self, observers: &mut [&mut dyn Observer]) -> Result<ScenarioReport, RunError> {
         let mut world = InteractionWorld::new(self.config)?;
-        self.scene.add_to(&mut world)?;
-        let ids: Vec<HandId> = self.hands.iter().map(|h| world.add_hand(h.side())).collect();
-        let dt = self.config.dt;
-        let steps = (self.duration / dt).round() as usize;
-        let objects = world.object_count();
-        let mut history = History {
-            dt,
-            names: (0..objects as u32).map(|o| world.object_name(crate::ObjectId(o)).unwrap_or("").to_string()).collect(),
-            ..History::default()
-        };
-        for i in 0..steps {
-            let t = i as f32 * dt;
-            let mut palms = Vec::with_capacity(self.hands.len());
-            let mut trace_hands = Vec::with_capacity(self.hands.len());
-            for (k, (hand, id)) in self.hands.iter().zip(&ids).enumerate() {
-                let (pose, grab, pinch) = match hand {
-                    HandSource::Script(s) => (Some(s.pose(t)), None, None),
-                    HandSource::Recording { playback, track } => match playback.sample(*track, t as f64) {
-                        Some(s) => (Some(s.pose), s.grab, s.pinch),
-                        None => (None, None, None),
-                    },
-                };
-                match &pose {
-                    Some(p) => world.set_hand_pose(*id, p)?,
-                    None => world.clear_hand_pose(*id)?,
-                }
-                palms.push(pose.as_ref().map(|p| (p.palm.center, p.palm.rotation)));
-                if let Some(p) = pose {
-                    trace_hands.push(TraceHand {
-                        id: k as i64,
-                        side: hand.side(),
-                        palm: p.palm.to_world(Vec3::Y * p.palm.half_extents.y).to_array(),
-                        grab,
-                        pinch,
-                    });
-                }
-            }
-            world.step();
-            let mut poses = Vec::with_capacity(objects);
-            let mut speeds = Vec::with_capacity(objects);
-            let mut contacts = vec![0u32; objects];
-            for o in 0..objects as u32 {
-                let s = world.object_state(crate::ObjectId(o))?;
-                poses.push((s.position, s.rotation));
-                speeds.push(s.linvel.length());
-            }
-            for c in world.contacts() {
-                contacts[c.object.0 as usize] += 1;
-            }
-            history.poses.push(poses);
-            history.speeds.push(speeds);
-            history.contacts.push(contacts);
-            history.palms.push(palms);
-            each(&world, &TraceLine::of(&world, trace_hands))?;
+        world.add_scene(&self.scene)?;
+        let mut history = History::new(&world);
+        let mut driver = Driver::new(&mut world);
+        for hand in &self.hands {
+            driver.add_hand(hand.source());
         }
+        let steps = (self.duration / self.config.dt).round() as usize;
+        driver.run(steps, &mut drive::observers(vec![&mut history], observers))?;
         let checks: Vec<CheckResult> = self.checks.iter().map(|c| c.evaluate(&history)).collect();
         Ok(ScenarioReport { name: self.name.clone(), passed: checks.iter().all(|c| c.passed), checks })
     }
 }
 
-fn hand_source(h: HandEntry, dir: &Path) -> Result<HandSource, String> {
+/// Why a scenario hand is wrong; the text starts with the field.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum HandError {
+    /// A bad keyframe.
+    #[error(transparent)]
+    Key(#[from] script::KeyError),
+    /// A field that does not fit the hand's kind or range.
+    #[error("{field}: {reason}")]
+    Field {
+        /// The field, e.g. `scale`.
+        field: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+    /// The recording could not be read.
+    #[error("recording: {0}")]
+    Recording(#[from] crate::input::InputError),
+}
+
+fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
+    let field = |field, reason: &str| HandError::Field { field, reason: reason.to_string() };
     match (h.recording, h.keys.is_empty()) {
-        (Some(_), false) => Err("keys: a hand is either scripted (keys) or recorded (recording), not both".into()),
-        (None, true) => Err("keys: a scripted hand needs keys (or give a recording)".into()),
+        (Some(_), false) => {
+            Err(field("keys", "a hand is either scripted (keys) or recorded (recording), not both"))
+        }
+        (None, true) => Err(field("keys", "a scripted hand needs keys (or give a recording)")),
         (None, false) => {
-            let side = h.side.ok_or("side: a scripted hand needs \"left\" or \"right\"")?;
+            let side = h.side.ok_or(field("side", "a scripted hand needs \"left\" or \"right\""))?;
             if h.offset != Vec3::ZERO {
-                return Err("offset: only for recordings; key palm positions are in world coordinates".into());
+                let why = "only for recordings; key palm positions are in world coordinates";
+                return Err(field("offset", why));
             }
             if !(h.scale.is_finite() && (0.5..=1.5).contains(&h.scale)) {
-                return Err(format!("scale: must be in [0.5, 1.5] (relative to an average adult hand), got {}", h.scale));
+                let why = format!(
+                    "must be in [0.5, 1.5] (relative to an average adult hand), got {}",
+                    h.scale
+                );
+                return Err(field("scale", &why));
             }
-            Script::with_rig(crate::hand::rig::HandRig::adult(side).scaled(h.scale), h.keys).map(HandSource::Script)
+            let rig = HandRig::adult(side).scaled(h.scale);
+            Ok(ScenarioHand::Script(Script::with_rig(rig, h.keys)?))
         }
         (Some(path), true) => {
             if h.scale != 1.0 {
-                return Err("scale: only for scripted hands; a recording has its own hand size".into());
+                let why = "only for scripted hands; a recording has its own hand size";
+                return Err(field("scale", why));
             }
-            let path = dir.join(path);
             if !h.offset.is_finite() {
-                return Err(format!("offset: must be finite, got {:?}", h.offset));
+                return Err(field("offset", &format!("must be finite, got {:?}", h.offset)));
             }
-            let recording = crate::input::leap::load(&path).map_err(|e| format!("recording: {e}"))?;
-            let playback = Playback::new(&recording.source_name, &recording.frames, &Conversion::leap_desktop(h.offset), DEFAULT_GRACE)
-                .map_err(|e| format!("recording: {e}"))?;
+            let recording = crate::input::leap::load(&dir.join(path))?;
+            let conversion = Conversion::leap_desktop(h.offset);
+            let playback =
+                Playback::new(&recording.source_name, &recording.frames, &conversion, DEFAULT_GRACE)?;
             let track = match h.side {
                 None => 0,
-                Some(side) => playback
-                    .tracks
-                    .iter()
-                    .position(|t| t.side == side)
-                    .ok_or(format!("side: the recording has no {side:?} hand"))?,
+                Some(side) => playback.tracks.iter().position(|t| t.side == side).ok_or_else(|| {
+                    field("side", &format!("the recording has no {side:?} hand"))
+                })?,
             };
             if playback.tracks.is_empty() {
-                return Err("recording: it tracks no hands".into());
+                return Err(field("recording", "it tracks no hands"));
             }
-            Ok(HandSource::Recording { playback: Box::new(playback), track })
+            Ok(ScenarioHand::Recording { playback: Box::new(playback), track })
         }
     }
 }

@@ -1,7 +1,8 @@
 //! Where and when a recorded hand grasps: computed from the recording
 //! itself, so an object can be placed in the hand of any recording.
 
-use super::playback::{HandSample, Playback};
+use crate::hand::HandSample;
+use crate::input::playback::Playback;
 use glam::Vec3;
 
 /// The grasp of a recording.
@@ -42,8 +43,7 @@ fn aperture(tips: &[Vec3; 5]) -> f32 {
 ///   than the nearest one plus one finger width).
 fn grasp_point(hand: &HandSample, tip: &[Vec3; 5], aperture: f32, finger_width: f32) -> Vec3 {
     let pose = &hand.pose;
-    let palm = &pose.palm;
-    let face = palm.to_world(Vec3::Y * palm.half_extents.y);
+    let face = pose.palm_surface();
     if hand.grab.is_some_and(|g| g >= 0.5) {
         let middles = (1..5).map(|f| pose.fingers[f][1].centroid()).sum::<Vec3>() / 4.0;
         return 0.5 * (face + middles);

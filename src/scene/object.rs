@@ -1,6 +1,6 @@
 //! Descriptions of the virtual objects hands can touch, and of static scenery.
 
-use crate::material::Material;
+use super::material::Material;
 use glam::{Quat, Vec3};
 use rapier3d::geometry::SharedShape;
 use rapier3d::math::Pose;
@@ -45,7 +45,7 @@ pub struct MeshShape {
     /// The file's triangles, filled in when a scene is loaded (and kept in
     /// session files, so a replay needs no mesh files).
     #[serde(default)]
-    pub mesh: crate::mesh::TriangleMesh,
+    pub mesh: super::mesh::TriangleMesh,
 }
 
 fn unit_scale() -> f32 {
@@ -76,14 +76,18 @@ impl MeshShape {
         let f = |sub: &str| format!("{field}.Mesh.{sub}");
         positive(object, &f("scale"), self.scale)?;
         self.mesh.check().map_err(|e| {
-            let why = if self.mesh.triangles.is_empty() { format!("'{}' is not loaded (load the scene with Scene::load)", self.file) } else { e };
+            let why = if self.mesh.triangles.is_empty() {
+                format!("'{}' is not loaded (load the scene with Scene::load)", self.file)
+            } else {
+                e.to_string()
+            };
             ObjectError::new(object, f("file"), why)
         })?;
         let mesh = self.mesh.scaled(self.scale);
         Ok(match self.body {
             MeshBody::Voxels { size } => {
                 positive(object, &f("body.Voxels.size"), size)?;
-                let boxes = mesh.voxel_boxes(size, MAX_VOXEL_BOXES).map_err(|e| ObjectError::new(object, f("body.Voxels.size"), e))?;
+                let boxes = mesh.voxel_boxes(size, MAX_VOXEL_BOXES).map_err(|e| ObjectError::new(object, f("body.Voxels.size"), e.to_string()))?;
                 SharedShape::compound(
                     boxes.into_iter().map(|(c, h)| (Pose::from_translation(c), SharedShape::cuboid(h.x, h.y, h.z))).collect(),
                 )

@@ -17,7 +17,7 @@
 //!
 //! Optional: `"ground": {"height": 0.0, "friction": 0.5}`, `"gravity": [0.0, -9.81, 0.0]`
 //! and `"towers": [{"base": [x, y, z]}]` (54 blocks each, see
-//! [`crate::scenes::add_tower`]).
+//! [`super::Tower`]).
 //!
 //! Shapes are `{"Box": {"half_extents": [x, y, z]}}`, `{"Sphere": {"radius": r}}`,
 //! `{"Capsule": {"half_height": h, "radius": r}}`, `{"Cylinder": {"half_height": h, "radius": r}}`
@@ -25,9 +25,9 @@
 //! A material may also be given by name alone: `"material": "wood"` (see
 //! [`crate::Material::names`]). Unknown fields are errors.
 
-use crate::material::Material;
-use crate::object::{GammaMode, ObjectDesc, ShapeDesc, StaticDesc};
-use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
+use super::material::Material;
+use super::object::{GammaMode, ObjectDesc, ShapeDesc, StaticDesc};
+use super::tower::Tower;
 use glam::{Quat, Vec3};
 use std::path::Path;
 
@@ -61,16 +61,10 @@ fn identity() -> Quat {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Ground {
+    /// Height of its top face (m).
     pub height: f32,
     /// Object–ground friction coefficient.
     pub friction: f32,
-}
-
-/// A 54-block tower ([`crate::scenes::add_tower`]) standing on `base`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Tower {
-    pub base: Vec3,
 }
 
 #[derive(Debug, Clone, serde::Deserialize)]
@@ -91,10 +85,13 @@ pub(crate) struct SceneEntry {
 /// A loaded scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    /// A flat ground, if any.
     pub ground: Option<Ground>,
     /// Overrides the world's gravity (m/s²).
     pub gravity: Option<Vec3>,
+    /// Static scenery.
     pub statics: Vec<StaticDesc>,
+    /// Objects hands can touch.
     pub objects: Vec<ObjectDesc>,
     /// Towers of blocks named `block{level}-{slot}`, added after `objects`.
     pub towers: Vec<Tower>,
@@ -132,7 +129,7 @@ impl Scene {
             if let ShapeDesc::Mesh(m) = shape
                 && m.mesh.triangles.is_empty()
             {
-                m.mesh = crate::mesh::TriangleMesh::load(&dir.join(&m.file))
+                m.mesh = super::mesh::TriangleMesh::load(&dir.join(&m.file))
                     .map_err(|e| fail(format!("object '{name}': shape.Mesh.file: {e}")))?;
             }
         }
@@ -180,27 +177,13 @@ impl Scene {
         Ok(scene)
     }
 
-    /// Adds the scene to a world. Its gravity is part of the world's
-    /// config: see [`Self::config`].
-    pub fn add_to(&self, world: &mut InteractionWorld) -> Result<(), WorldError> {
-        if let Some(g) = self.ground {
-            world.add_static(&StaticDesc::ground(g.height, g.friction))?;
+    /// The names of every object the scene adds, towers' blocks included.
+    pub fn object_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self.objects.iter().map(|o| o.name.clone()).collect();
+        for _ in &self.towers {
+            names.extend(Tower::block_names());
         }
-        for s in &self.statics {
-            world.add_static(s)?;
-        }
-        for o in &self.objects {
-            world.add_object(o)?;
-        }
-        for t in &self.towers {
-            crate::scenes::add_tower(world, t.base)?;
-        }
-        Ok(())
-    }
-
-    /// `base` with the scene's gravity, if it sets one.
-    pub fn config(&self, base: InteractionConfig) -> InteractionConfig {
-        InteractionConfig { gravity: self.gravity.unwrap_or(base.gravity), ..base }
+        names
     }
 }
 

@@ -1,0 +1,208 @@
+//! What a contact holds on to between steps: its point C on the object, the
+//! bone's material point p that presses there, and its skin patch's
+//! samples. Static contacts keep them; slipping ones move them
+//! (§3.5.3).
+
+use super::surface::{self, SurfacePoint};
+use super::{BoneMotion, ObjectView, patch};
+use crate::friction::FrictionCoefficients;
+use crate::hand::{Bone, BoneShape, Palm, SkinClass};
+use glam::{Quat, Vec3};
+
+/// A contact's anchors.
+#[derive(Debug, Clone)]
+pub(crate) struct Anchor {
+    /// C and n in the object body's frame: static contacts move with it.
+    pub c_local: Vec3,
+    pub n_local: Vec3,
+    pub bone: BoneAnchor,
+    /// Per sample: its point in the object frame and its skin offset from p
+    /// in the bone frame.
+    pub samples: Vec<(Vec3, Vec3)>,
+    /// The penetration depth the force saw last step (m), for the
+    /// penetration-speed limit.
+    pub limited_depth: f32,
+}
+
+/// The material point of the bone that the contact holds on to.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum BoneAnchor {
+    /// Axial parameter of p on the capsule, and the bone's direction in the
+    /// palm frame when the contact began (to carry the patch's skin offsets
+    /// along as the finger bends).
+    Capsule { s: f32, dir_in_palm: Vec3 },
+    /// p in the palm frame.
+    Palm { local: Vec3 },
+}
+
+/// Where a contact's anchors are this step (world).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Site {
+    /// The contact point C on the object's surface (m).
+    pub c: Vec3,
+    /// The object's outward normal at C.
+    pub n: Vec3,
+    /// The bone's point p now and one step ago (m).
+    pub p: Vec3,
+    pub p_prev: Vec3,
+}
+
+impl BoneAnchor {
+    /// The bone's material point that presses at C (normal `n`).
+    fn at(bone: &BoneShape, palm: &Palm, c: Vec3, n: Vec3) -> BoneAnchor {
+        match bone {
+            BoneShape::Capsule(cap) => {
+                let dir = palm.rotation.inverse() * (cap.b - cap.a).normalize_or_zero();
+                BoneAnchor::Capsule { s: cap.closest_parameter(c), dir_in_palm: dir }
+            }
+            BoneShape::Palm(p) => BoneAnchor::Palm { local: p.to_local(palm_point_under(p, c, n)) },
+        }
+    }
+
+    /// The anchored point p on the bone's surface, for a contact normal `n`.
+    fn point(self, bone: BoneShape, n: Vec3) -> Vec3 {
+        match (self, bone) {
+            (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => c.axis_point(s) - c.radius * n,
+            (BoneAnchor::Palm { local }, BoneShape::Palm(p)) => p.to_world(local),
+            // A bone never changes kind; keep a harmless answer for the type system.
+            (_, BoneShape::Capsule(c)) => c.centroid(),
+            (_, BoneShape::Palm(p)) => p.center,
+        }
+    }
+
+    /// The skin frame's rotation (world): the palm's, turned for a finger
+    /// bone by how the bone has swung in the palm since it was anchored.
+    pub fn rotation(self, bone: BoneShape, palm: &Palm) -> Quat {
+        match (self, bone) {
+            (BoneAnchor::Capsule { dir_in_palm, .. }, BoneShape::Capsule(c)) => {
+                let now = palm.rotation.inverse() * (c.b - c.a).normalize_or_zero();
+                palm.rotation * Quat::from_rotation_arc(dir_in_palm, now)
+            }
+            _ => palm.rotation,
+        }
+    }
+}
+
+/// The palm surface point under C: where a ray from C along −n leaves the
+/// palm box while C is inside it, else the palm's closest point to C.
+fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
+    let local = p.to_local(c);
+    if !local.abs().cmple(p.half_extents).all() {
+        return p.to_world(local.clamp(-p.half_extents, p.half_extents));
+    }
+    let dir = p.rotation.inverse() * -n;
+    let exit = (0..3)
+        .filter(|&i| dir[i].abs() > 1e-6)
+        .map(|i| (p.half_extents[i].copysign(dir[i]) - local[i]) / dir[i])
+        .fold(f32::INFINITY, f32::min);
+    if exit.is_finite() { c - n * exit } else { c }
+}
+
+/// The contact site on the face found by the closest-feature query, under
+/// the bone's point nearest the object's centre: the middle of the overlap
+/// of a flat bone and a flat face, wherever either has slid. This is the
+/// thesis's ray towards the collider's centre (§3.7).
+fn site_under_bone(bone: &BoneShape, object: &ObjectView, near: SurfacePoint) -> SurfacePoint {
+    let centre = object.center_of_mass;
+    let (bone_centre, reach) = match bone {
+        BoneShape::Capsule(cap) => (cap.axis_point(cap.closest_parameter(centre)), cap.radius),
+        BoneShape::Palm(p) => {
+            let local = p.to_local(centre).clamp(-p.half_extents, p.half_extents);
+            (p.to_world(local), p.half_extents.min_element())
+        }
+    };
+    surface::locate_contact(object.shape, &object.pose, near, bone_centre, reach + 0.01)
+}
+
+impl Anchor {
+    /// Anchors a contact at `near`, the closest features on the object.
+    pub fn new(
+        near: SurfacePoint,
+        bone: Bone,
+        motion: &BoneMotion,
+        object: &ObjectView,
+        patch: &patch::PatchConfig,
+    ) -> Anchor {
+        let site = site_under_bone(&motion.now, object, near);
+        let (c, n) = (site.point, site.normal);
+        let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, c, n);
+        let radius = match bone.skin_class() {
+            SkinClass::Finger => patch.finger_radius,
+            SkinClass::Thumb => patch.thumb_radius,
+            SkinClass::Palm => patch.palm_radius,
+        };
+        let rot_inv = bone_anchor.rotation(motion.now, &motion.palm_now).inverse();
+        let samples = patch::sample_offsets(n, patch.samples, radius)
+            .into_iter()
+            .map(|o| {
+                let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
+                (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
+            })
+            .collect();
+        Anchor {
+            c_local: object.pose.inverse_transform_point(c),
+            n_local: object.pose.rotation.inverse() * n,
+            bone: bone_anchor,
+            samples,
+            limited_depth: 0.0,
+        }
+    }
+
+    /// Where the anchors are this step.
+    pub fn site(&self, object: &ObjectView, motion: &BoneMotion) -> Site {
+        let pose = &object.pose;
+        let n = (pose.rotation * self.n_local).normalize_or_zero();
+        Site {
+            c: pose.transform_point(self.c_local),
+            n,
+            p: self.bone.point(motion.now, n),
+            p_prev: self.bone.point(motion.prev, n),
+        }
+    }
+
+    /// Slipping (§3.5.3): skin and surface slide over each other, so both
+    /// anchors move. The site re-centres under the bone (the overlap follows
+    /// whichever of bone and face is smaller); then C moves along the
+    /// surface by inverse ray casts, to keep the slip rule's stretch
+    /// (`kinetic`, Coulomb) or, with `kinetic` `None` (Eq. 3.8 as written),
+    /// along the thesis's ray towards the bone. The patch moves with C.
+    pub fn slide(
+        &mut self,
+        at: &Site,
+        normal_force: f32,
+        motion: &BoneMotion,
+        object: &ObjectView,
+        kinetic: Option<FrictionCoefficients>,
+        probe_offset: f32,
+    ) {
+        let pose = &object.pose;
+        let here = SurfacePoint { point: at.c, normal: at.n };
+        let site = site_under_bone(&motion.now, object, here);
+        let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, site.point, site.normal);
+        let p_new = bone_anchor.point(motion.now, site.normal);
+        let target = kinetic.map(|mu| {
+            let d = at.c - at.p;
+            let stretch_t = d - d.dot(at.n) * at.n;
+            site.point + crate::friction::slipped_stretch(stretch_t, normal_force, mu, object.gamma)
+        });
+        let Some(moved) = surface::slide(object.shape, pose, site, target, p_new, probe_offset) else {
+            return;
+        };
+        let shift = moved.point - at.c;
+        self.c_local = pose.inverse_transform_point(moved.point);
+        self.n_local = pose.rotation.inverse() * moved.normal;
+        // The skin offsets live in the bone frame, which the new anchor
+        // redefines: carry them over.
+        let carry = bone_anchor.rotation(motion.now, &motion.palm_now).inverse()
+            * self.bone.rotation(motion.now, &motion.palm_now);
+        for (_, skin) in self.samples.iter_mut() {
+            *skin = carry * *skin;
+        }
+        self.bone = bone_anchor;
+        for (ci_local, _) in self.samples.iter_mut() {
+            let ci = pose.transform_point(*ci_local) + shift;
+            let on_surface = surface::project_to_surface(object.shape, pose, ci);
+            *ci_local = pose.inverse_transform_point(on_surface);
+        }
+    }
+}

@@ -1,0 +1,155 @@
+//! What keeps the contact law sane on tracked hands, beyond the thesis:
+//! a bone that teleports deep inside an object (a tracking glitch) must not
+//! launch it, and a pure spring must not ring forever. Each is switched in
+//! [`crate::InteractionConfig`] and off in [`crate::InteractionConfig::thesis`].
+
+use super::FrictionCoefficients;
+use super::gamma::MAX_PENETRATION_FRACTION;
+use super::law::spring_force;
+use glam::Vec3;
+
+/// The penetration-speed limit: the depth the spring sees (m) may grow by
+/// at most `max_speed` (m/s) beyond what the object's own approach towards
+/// the bone adds (`approach_speed`, m/s, counted only when positive), from
+/// `previous`, the limited depth of the last step. A bone that jumps deep
+/// inside ramps in like a finger pressing at `max_speed` instead of
+/// releasing the whole spring at once; an object falling onto a hand meets
+/// the full spring.
+pub fn speed_limited_depth(
+    depth: f32,
+    previous: f32,
+    approach_speed: f32,
+    max_speed: f32,
+    dt: f32,
+) -> f32 {
+    let approach = approach_speed.max(0.0);
+    depth.min(previous + (max_speed + approach) * dt)
+}
+
+/// The bone's velocity (m/s) with its speed into the object (along `−n`)
+/// held to `max_speed`, so a bone that teleports cannot kick the object
+/// through the damper either.
+pub fn limited_bone_velocity(velocity: Vec3, n: Vec3, max_speed: f32) -> Vec3 {
+    let into = -velocity.dot(n);
+    if into > max_speed { velocity + (into - max_speed) * n } else { velocity }
+}
+
+/// The spring of [`spring_force`] with its normal stretch replaced by
+/// `seen_depth` (m), the depth the safeguards let it see; the tangential
+/// stretch is untouched.
+pub fn spring_at_depth(gamma: f32, c: Vec3, p: Vec3, n: Vec3, seen_depth: f32) -> Vec3 {
+    let depth = (c - p).dot(n);
+    spring_force(gamma, c, p) + gamma * (seen_depth - depth) * n
+}
+
+/// The force cap: the spring never sees more than the thesis's assumed
+/// deepest penetration, 20 % of the object's bounding diameter d (§3.5.6).
+/// Deeper bones are tracking errors, not harder presses, so they push no
+/// harder: the normal spring force stays ≤ γ·0.2·d, and friction ≤
+/// max(μ_st, μ_dyn) times that.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceCap {
+    /// The deepest penetration the spring sees (m).
+    pub max_depth: f32,
+}
+
+impl ForceCap {
+    /// The cap of an object whose bounding sphere is `diameter` across (m).
+    pub fn for_diameter(diameter: f32) -> ForceCap {
+        ForceCap { max_depth: MAX_PENETRATION_FRACTION * diameter }
+    }
+
+    /// The depth the spring sees for a bone `depth` deep (m).
+    pub fn depth(self, depth: f32) -> f32 {
+        depth.min(self.max_depth)
+    }
+
+    /// The largest normal spring force, `γ · 0.2 · d` (N).
+    pub fn normal_force(self, gamma: f32) -> f32 {
+        gamma * self.max_depth
+    }
+
+    /// The friction `f_T` bounded by `max(μ_st, μ_dyn)` times
+    /// [`Self::normal_force`]. Kinetic friction as written in the thesis
+    /// scales an unbounded stretch, and a damper can add normal force beyond
+    /// the spring's; this bounds both.
+    pub fn tangential(self, f_t: Vec3, mu: FrictionCoefficients, gamma: f32) -> Vec3 {
+        // Multiplied as (μ·γ)·d_max, not μ·(γ·d_max): recorded traces and
+        // sessions depend on the last bit.
+        let cap = mu.max() * gamma * self.max_depth;
+        let magnitude = f_t.length();
+        if magnitude > cap { f_t * (cap / magnitude) } else { f_t }
+    }
+}
+
+/// The damping coefficient `c = 2ζ√(γ m)` (N·s/m) that gives one contact
+/// spring of stiffness γ on a body of mass `m` the damping ratio ζ.
+pub fn damping_coefficient(gamma: f32, mass: f32, damping_ratio: f32) -> f32 {
+    2.0 * damping_ratio * (gamma * mass).sqrt()
+}
+
+/// The Kelvin–Voigt reaction on the bone: the spring plus a damper on the
+/// relative velocity. `relative_velocity` is the bone's velocity minus the
+/// object's velocity at the contact (m/s); `C − p` shrinks at that rate.
+pub fn damped_spring_force(spring: Vec3, damping: f32, relative_velocity: Vec3) -> Vec3 {
+    spring - damping * relative_velocity
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_jump_ramps_in_at_the_speed_limit_but_an_approaching_object_does_not() {
+        // A bone 30 mm deep at once, 1 m/s limit, 1 ms steps: 1 mm a step.
+        let mut seen = 0.0;
+        for _ in 0..3 {
+            seen = speed_limited_depth(0.03, seen, 0.0, 1.0, 0.001);
+        }
+        assert!((seen - 0.003).abs() < 1e-7, "{seen}");
+        // An object arriving at 2.5 m/s adds its own approach.
+        assert!((speed_limited_depth(0.03, 0.0, 2.5, 1.0, 0.001) - 0.0035).abs() < 1e-7);
+        // A receding object does not lower the limit below the bone's own.
+        assert!((speed_limited_depth(0.03, 0.0, -4.0, 1.0, 0.001) - 0.001).abs() < 1e-7);
+        // A shallow bone is seen as it is.
+        assert_eq!(speed_limited_depth(0.0004, 0.0, 0.0, 1.0, 0.001), 0.0004);
+    }
+
+    #[test]
+    fn only_the_speed_into_the_object_is_limited() {
+        let v = Vec3::new(0.7, -3.0, 0.2); // 3 m/s into a face with n = +y
+        let limited = limited_bone_velocity(v, Vec3::Y, 1.0);
+        assert!((limited - Vec3::new(0.7, -1.0, 0.2)).length() < 1e-6);
+        let away = Vec3::new(0.7, 3.0, 0.2);
+        assert_eq!(limited_bone_velocity(away, Vec3::Y, 1.0), away);
+    }
+
+    #[test]
+    fn the_spring_sees_the_limited_depth_along_the_normal_only() {
+        let (c, p) = (Vec3::ZERO, Vec3::new(0.002, -0.01, 0.0)); // 10 mm deep
+        let f = spring_at_depth(300.0, c, p, Vec3::Y, 0.004);
+        assert!((f - Vec3::new(-0.6, 1.2, 0.0)).length() < 1e-5, "{f:?}");
+    }
+
+    #[test]
+    fn the_cap_bounds_depth_normal_force_and_friction() {
+        let cap = ForceCap::for_diameter(0.05); // 10 mm
+        assert!((cap.max_depth - 0.01).abs() < 1e-7);
+        assert_eq!(cap.depth(0.03), cap.max_depth);
+        assert_eq!(cap.depth(0.004), 0.004);
+        assert!((cap.normal_force(250.0) - 2.5).abs() < 1e-5);
+        let mu = FrictionCoefficients { static_mu: 0.3, dynamic_mu: 0.7 };
+        // Friction is held to max(μ) · 2.5 N = 1.75 N, keeping its direction.
+        let t = cap.tangential(Vec3::new(3.0, 0.0, 4.0), mu, 250.0);
+        assert!((t - Vec3::new(1.05, 0.0, 1.4)).length() < 1e-5, "{t:?}");
+        assert_eq!(cap.tangential(Vec3::new(1.0, 0.0, 0.0), mu, 250.0), Vec3::X);
+    }
+
+    #[test]
+    fn the_damper_opposes_the_relative_velocity() {
+        let c = damping_coefficient(400.0, 0.05, 0.5);
+        assert!((c - 2.0 * 0.5 * (20.0f32).sqrt()).abs() < 1e-6);
+        let f = damped_spring_force(Vec3::Y, c, Vec3::new(0.0, -0.1, 0.0));
+        assert!(f.y > 1.0, "a bone moving in presses harder: {f:?}");
+    }
+}

@@ -1,0 +1,92 @@
+//! The per-step trace: one JSON line per physics step, in world metres
+//! (y up). `replay --trace` and `scenario --trace` write it.
+
+use crate::hand::{HandSample, Side};
+use crate::pipeline::InteractionWorld;
+use std::io::Write;
+
+/// One line of a trace.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct TraceLine {
+    /// Simulated time (s).
+    pub t: f64,
+    /// The tracked hands.
+    pub hands: Vec<TraceHand>,
+    /// Every object, in id order.
+    pub objects: Vec<TraceObject>,
+    /// Active hand–object contacts.
+    pub contacts: usize,
+}
+
+/// A tracked hand on a trace line.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct TraceHand {
+    /// The tracker's hand id, or the hand's index for a scripted hand.
+    pub id: i64,
+    /// Which hand.
+    pub side: Side,
+    /// The centre of the palm's grasping face (m).
+    pub palm: [f32; 3],
+    /// The tracker's grab strength (0..1), if it reports one.
+    pub grab: Option<f32>,
+    /// The tracker's pinch strength (0..1), if it reports one.
+    pub pinch: Option<f32>,
+}
+
+/// An object on a trace line.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct TraceObject {
+    /// Its name in the scene.
+    pub name: String,
+    /// Body origin (m).
+    pub pos: [f32; 3],
+    /// Unit quaternion, x y z w.
+    pub rot: [f32; 4],
+    /// Linear velocity (m/s).
+    pub linvel: [f32; 3],
+}
+
+impl TraceHand {
+    /// A hand's entry, from its label and this step's sample.
+    pub fn of(id: i64, side: Side, sample: &HandSample) -> TraceHand {
+        TraceHand {
+            id,
+            side,
+            palm: sample.pose.palm_surface().to_array(),
+            grab: sample.grab,
+            pinch: sample.pinch,
+        }
+    }
+}
+
+impl TraceLine {
+    /// The line for `world` after a step, with the given hands.
+    pub fn of(world: &InteractionWorld, hands: Vec<TraceHand>) -> TraceLine {
+        let objects = world
+            .object_ids()
+            .filter_map(|id| {
+                let s = world.object_state(id).ok()?;
+                Some(TraceObject {
+                    name: world.object_name(id).unwrap_or("").to_string(),
+                    pos: s.position.to_array(),
+                    rot: s.rotation.to_array(),
+                    linvel: s.linvel.to_array(),
+                })
+            })
+            .collect();
+        TraceLine { t: world.time(), hands, objects, contacts: world.contacts().len() }
+    }
+
+    /// Whether every number on the line is finite.
+    pub fn is_finite(&self) -> bool {
+        let hands = self.hands.iter().flat_map(|h| h.palm.iter());
+        let objects = self.objects.iter().flat_map(|o| o.pos.iter().chain(&o.rot).chain(&o.linvel));
+        hands.chain(objects).all(|v| v.is_finite())
+    }
+
+    /// Writes the line as JSON Lines.
+    pub fn write(&self, out: &mut impl Write) -> std::io::Result<()> {
+        serde_json::to_writer(&mut *out, self).map_err(std::io::Error::other)?;
+        out.write_all(b"\n")
+    }
+}

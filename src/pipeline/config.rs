@@ -1,0 +1,193 @@
+//! The interaction layer's settings, their validation, and the rapier
+//! parameters they imply.
+
+use crate::contact::patch::PatchConfig;
+use crate::friction::KineticFriction;
+use crate::scene::{GammaMode, Scene};
+use glam::Vec3;
+use rapier3d::dynamics::{FrictionModel, IntegrationParameters};
+
+/// Settings of the interaction layer. Units: s, m, N, m/s. In files, a
+/// missing field takes its default and an unknown one is an error.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct InteractionConfig {
+    /// Physics time step (s); default 1 ms, the haptic rate. Contact springs
+    /// are explicit forces: a longer step is still stable (the stability
+    /// limit softens γ for objects too light for it) but light objects then
+    /// feel softer.
+    pub dt: f32,
+    /// Gravity (m/s²).
+    pub gravity: Vec3,
+    /// A contact begins when a bone's surface comes within this distance of
+    /// an object (m): the thesis's Default Contact Offset.
+    pub contact_offset: f32,
+    /// A contact ends when the bone's surface is farther than this (m).
+    /// Larger than `contact_offset`, so tracking jitter at the threshold does
+    /// not flicker begin/end events.
+    pub release_offset: f32,
+    /// Contact stiffness γ for objects without their own (§3.5.6).
+    pub gamma: GammaMode,
+    /// Eq. 3.8 as written, or Coulomb's kinetic friction (default).
+    pub kinetic: KineticFriction,
+    /// Skin patch sampling (§3.5.4).
+    pub patch: PatchConfig,
+    /// Damping ratio ζ of each contact spring, or `None` for the thesis's
+    /// pure spring. The damper acts on the bone-vs-object velocity at the
+    /// contact with `c = 2ζ√(γ m)`.
+    pub damping_ratio: Option<f32>,
+    /// Cap each contact's spring at the thesis's assumed 20 % maximum
+    /// penetration of the object's bounding diameter d: its normal spring
+    /// force stays ≤ `γ·0.2·d` however deep a bone is
+    /// ([`crate::friction::ForceCap`]).
+    pub force_cap: bool,
+    /// The penetration depth a contact's spring sees may grow by at most
+    /// this speed (m/s), or `None` for no limit. Real fingers press slower;
+    /// a bone that teleports deep inside is a tracking glitch.
+    pub max_penetration_speed: Option<f32>,
+    /// How far above the surface the inverse rays of slipping contacts
+    /// start (m).
+    pub probe_offset: f32,
+    /// Natural frequency of rapier's soft object–object and object–ground
+    /// contacts (Hz). Stiffer than the step rate collapses stacks, so the
+    /// world uses at most `1/dt`. rapier's 30 Hz default
+    /// lets a 54-block tower sink 28 mm in 2 s; 240 Hz at a 1 ms step,
+    /// 0.6 mm.
+    pub contact_frequency: f32,
+    /// rapier's friction between objects and with the ground: one Coulomb
+    /// cone per contact point (default), or rapier's faster simplified
+    /// model (one cone per group of 4 points plus a twist constraint),
+    /// which lets a block pushed out of a tower drag the levels above it.
+    pub object_friction: ObjectFriction,
+}
+
+/// How rapier solves friction between objects (not hand contacts, which
+/// are always the thesis's model).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+pub enum ObjectFriction {
+    /// One Coulomb cone per contact point.
+    #[default]
+    Coulomb,
+    /// rapier's simplified model: one cone per group of points plus a twist
+    /// constraint.
+    Simplified,
+}
+
+impl Default for InteractionConfig {
+    fn default() -> Self {
+        InteractionConfig {
+            dt: 1.0 / 1000.0,
+            gravity: Vec3::new(0.0, -9.81, 0.0),
+            contact_offset: 0.004,
+            release_offset: 0.008,
+            gamma: GammaMode::default(),
+            kinetic: KineticFriction::Coulomb,
+            patch: PatchConfig::default(),
+            damping_ratio: Some(0.5),
+            force_cap: true,
+            max_penetration_speed: Some(1.0),
+            probe_offset: 0.004,
+            contact_frequency: 240.0,
+            object_friction: ObjectFriction::Coulomb,
+        }
+    }
+}
+
+/// Why a configuration was rejected.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("config: {field}: {reason}")]
+pub struct ConfigError {
+    /// The field, as named in files.
+    pub field: &'static str,
+    /// What is wrong with its value.
+    pub reason: String,
+}
+
+impl InteractionConfig {
+    /// Eq. 3.8 as written and the safeguards off: pure spring, no force cap,
+    /// no penetration-speed limit.
+    pub fn thesis() -> Self {
+        InteractionConfig {
+            kinetic: KineticFriction::Thesis,
+            damping_ratio: None,
+            force_cap: false,
+            max_penetration_speed: None,
+            ..Self::default()
+        }
+    }
+
+    /// This config with the scene's gravity, if the scene sets one.
+    pub fn with_scene(self, scene: &Scene) -> Self {
+        InteractionConfig { gravity: scene.gravity.unwrap_or(self.gravity), ..self }
+    }
+
+    /// Checks every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        let err = |field, reason: String| Err(ConfigError { field, reason });
+        let pos = |v: f32| v.is_finite() && v > 0.0;
+        if !pos(self.dt) || self.dt > 0.1 {
+            return err("dt", format!("must be in (0, 0.1] s, got {}", self.dt));
+        }
+        if !pos(self.contact_frequency) {
+            let f = self.contact_frequency;
+            return err("contact_frequency", format!("must be a positive number of Hz, got {f}"));
+        }
+        if !self.gravity.is_finite() {
+            return err("gravity", format!("must be finite, got {:?}", self.gravity));
+        }
+        if !pos(self.contact_offset) {
+            return err("contact_offset", format!("must be positive, got {}", self.contact_offset));
+        }
+        if !(self.release_offset.is_finite() && self.release_offset >= self.contact_offset) {
+            let r = self.release_offset;
+            return err("release_offset", format!("must be ≥ contact_offset, got {r}"));
+        }
+        if let GammaMode::Fixed(g) = self.gamma
+            && !pos(g)
+        {
+            return err("gamma", format!("must be positive, got {g}"));
+        }
+        if self.patch.samples == 0 || self.patch.samples == 2 || self.patch.samples > 64 {
+            // Two samples cannot be centred on C (one sits on it).
+            let n = self.patch.samples;
+            return err("patch.samples", format!("must be 1 or 3..=64, got {n}"));
+        }
+        for (field, v) in [
+            ("patch.finger_radius", self.patch.finger_radius),
+            ("patch.thumb_radius", self.patch.thumb_radius),
+            ("patch.palm_radius", self.patch.palm_radius),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return err(field, format!("must be finite and ≥ 0, got {v}"));
+            }
+        }
+        if let Some(z) = self.damping_ratio
+            && !(z.is_finite() && z >= 0.0)
+        {
+            return err("damping_ratio", format!("must be finite and ≥ 0, got {z}"));
+        }
+        if let Some(v) = self.max_penetration_speed
+            && !pos(v)
+        {
+            return err("max_penetration_speed", format!("must be positive, got {v}"));
+        }
+        if !pos(self.probe_offset) {
+            return err("probe_offset", format!("must be positive, got {}", self.probe_offset));
+        }
+        Ok(())
+    }
+
+    /// Sets rapier's step, friction model and contact stiffness from this
+    /// config.
+    pub(crate) fn set_rapier_parameters(&self, p: &mut IntegrationParameters) {
+        p.dt = self.dt;
+        p.friction_model = match self.object_friction {
+            ObjectFriction::Coulomb => FrictionModel::Coulomb,
+            ObjectFriction::Simplified => FrictionModel::Simplified,
+        };
+        let frequency = self.contact_frequency.min(1.0 / self.dt);
+        p.contact_softness.natural_frequency = frequency;
+        let static_frequency = p.static_contact_softness.natural_frequency;
+        p.static_contact_softness.natural_frequency = static_frequency.max(frequency);
+    }
+}

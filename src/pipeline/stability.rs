@@ -1,0 +1,58 @@
+//! Stage 4 of a step: the stability limit of each object's contact springs.
+//!
+//! Contact springs and dampers are explicit forces, integrated by rapier
+//! with symplectic Euler. A set of springs Σγ on a body is stable while
+//! `dt²·Σ γ_i w_i` stays well below 4, where `w_i = 1/m + |r_i|²/I_min`
+//! bounds how much the contact point at lever arm `r_i` accelerates per
+//! newton (linear plus rotational). The dampers need `dt·Σ c_i w_i < 2`.
+//! Both sums are kept ≤ 1; a light object in a many-finger grasp gets a
+//! proportionally softer γ (it then needs deeper fingers for the same
+//! force: the friction threshold, a force ratio, is unchanged). This only
+//! binds for light objects in many-finger grasps, or for long steps.
+
+use super::step::StepScratch;
+use super::world::{InteractionWorld, ObjectSlot};
+use crate::friction;
+
+/// Factors (≤ 1) on an object's contact stiffness and damping that keep the
+/// explicit contact forces stable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StabilityScale {
+    pub stiffness: f32,
+    pub damping: f32,
+}
+
+impl StabilityScale {
+    /// No limit: the object's own γ and damping.
+    pub const NONE: StabilityScale = StabilityScale { stiffness: 1.0, damping: 1.0 };
+}
+
+impl InteractionWorld {
+    /// An object's contact damping `c` before the stability limit (N·s/m).
+    pub(super) fn nominal_damping(&self, slot: &ObjectSlot) -> f32 {
+        let zeta = self.config.damping_ratio;
+        zeta.map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z))
+    }
+
+    /// Sets each object's stability limit for this step's contacts.
+    pub(super) fn stability_limits(&mut self, step: &mut StepScratch) {
+        let dt = self.config.dt;
+        step.limits.clear();
+        step.limits.resize(self.objects.len(), StabilityScale { stiffness: 0.0, damping: 0.0 });
+        for c in &step.candidates {
+            let o = c.contact.object.0 as usize;
+            let slot = &self.objects[o];
+            let body = &self.physics.bodies[slot.body];
+            let inv_inertia = body.mass_properties().local_mprops.inv_principal_inertia.max_element();
+            let r = c.contact.point - body.center_of_mass();
+            let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
+            step.limits[o].stiffness += slot.gamma * w;
+            step.limits[o].damping += self.nominal_damping(slot) * w;
+        }
+        for limit in step.limits.iter_mut() {
+            // The sums become the factors that keep them ≤ 1.
+            limit.stiffness = (1.0 / (limit.stiffness * dt * dt)).min(1.0);
+            limit.damping = (1.0 / (limit.damping * dt)).min(1.0);
+        }
+    }
+}

@@ -1,0 +1,40 @@
+//! Stage 3: new contacts begin where bones come within the contact offset.
+
+use super::{Candidate, StepScratch, contact_key};
+use crate::contact::Contact;
+use crate::hand::{Bone, HandId};
+use crate::pipeline::InteractionWorld;
+use crate::pipeline::stability::StabilityScale;
+use crate::scene::ObjectId;
+
+impl InteractionWorld {
+    /// Begins a contact for every bone within the contact offset of an
+    /// object it is not yet touching, hand by hand, through the collision
+    /// driver's filter chain ([`crate::contact::detect`]). C is placed by
+    /// the thesis's ray towards the collider, under the bone's point
+    /// nearest the object's centre.
+    pub(super) fn find_new_contacts(&mut self, step: &mut StepScratch) {
+        let world = &*self;
+        step.boxes.clear();
+        let colliders = &world.physics.colliders;
+        step.boxes.extend(world.objects.iter().map(|o| colliders[o.collider].compute_aabb()));
+        let settings = world.law_settings();
+        let kept = &step.candidates;
+        step.found.clear();
+        for h in 0..world.hands.len() {
+            let hand = HandId(h as u32);
+            let bones = Bone::all().filter_map(|bone| Some((bone, world.motion(hand, bone)?)));
+            let known = |bone: Bone, o: usize| {
+                let key = (ObjectId(o as u32), hand, bone.index());
+                kept.binary_search_by_key(&key, |c| contact_key(&c.contact)).is_ok()
+            };
+            let view = |o| world.object_view(o, StabilityScale::NONE);
+            step.detector.new_touches(bones, &step.boxes, view, known, |bone, motion, object, prox| {
+                let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
+                let proximity = Some(prox);
+                step.found.push(Candidate { contact, proximity, motion, is_new: true });
+            });
+        }
+        step.candidates.append(&mut step.found);
+    }
+}

@@ -1,0 +1,40 @@
+//! Stage 2: existing contacts are kept, or end.
+
+use super::{Candidate, StepScratch};
+use crate::contact::ContactEventKind;
+use crate::friction::FrictionState;
+use crate::pipeline::InteractionWorld;
+use crate::pipeline::stability::StabilityScale;
+
+impl InteractionWorld {
+    /// Keeps last step's contacts that still touch. A contact that was
+    /// static last step is kept without a distance query: its bone point is
+    /// pressed in below C, inside the cone. The others are kept only while
+    /// the bone is within the release offset. A contact ends when its hand
+    /// lost tracking or its object's contacts are re-seated.
+    pub(super) fn keep_contacts(&mut self, step: &mut StepScratch) {
+        step.candidates.clear();
+        for contact in std::mem::take(&mut self.contacts) {
+            let reseat = self.objects[contact.object.0 as usize].reseat;
+            let motion = self.motion(contact.hand, contact.bone).filter(|_| !reseat);
+            let Some(motion) = motion else {
+                self.push_event(ContactEventKind::Ended, &contact);
+                continue;
+            };
+            let proximity = if contact.state == FrictionState::Static {
+                None
+            } else {
+                let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
+                let Some(prox) = step.detector.still_touching(&motion.now, &object) else {
+                    self.push_event(ContactEventKind::Ended, &contact);
+                    continue;
+                };
+                Some(prox)
+            };
+            step.candidates.push(Candidate { contact, proximity, motion, is_new: false });
+        }
+        for slot in self.objects.iter_mut() {
+            slot.reseat = false;
+        }
+    }
+}

@@ -1,0 +1,164 @@
+//! One step of the interaction layer, in order: start reading here.
+//!
+//! [`InteractionWorld::step`] is the whole step. Its first half,
+//! [`InteractionWorld::apply_hand_forces`], turns the hand poses set before
+//! it into forces on the objects, stage by stage, one file each:
+//!
+//! 1. [`clear`]: last step's hand forces are cleared;
+//! 2. [`keep`]: existing contacts are kept or end;
+//! 3. [`find`]: new contacts begin, found by the collision driver;
+//! 4. [`super::stability`]: each object's stability limit on γ and damping;
+//! 5. [`update`]: every contact evaluates the contact law;
+//! 6. [`apply`]: the forces go to rapier, and each object's total (Eq. 3.10)
+//!    is kept for [`crate::ObjectState::hand_force`].
+//!
+//! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
+//! gravity, object–object contacts and integration.
+
+mod apply;
+mod clear;
+mod find;
+mod keep;
+mod update;
+
+use super::config::InteractionConfig;
+use super::stability::StabilityScale;
+use super::world::InteractionWorld;
+use super::record::Call;
+use crate::contact::detect::{Detector, Proximity};
+use crate::contact::patch::PatchScratch;
+use crate::contact::{BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView};
+use crate::friction::ForceCap;
+use crate::hand::{Bone, HandId};
+use crate::scene::ObjectId;
+use glam::Vec3;
+use rapier3d::parry::bounding_volume::Aabb;
+
+impl InteractionWorld {
+    /// One full step: hand forces, then the physics engine.
+    pub fn step(&mut self) {
+        // The hand poses were set before this call (`set_hand_pose`,
+        // `clear_hand_pose`); from them come this step's contacts and forces.
+        self.apply_hand_forces();
+        // ── Hand forces are set; rapier has not moved anything yet. ──
+        // As between MuJoCo's mj_step1 and mj_step2, a program may call the
+        // two halves itself and add forces of its own here.
+        self.step_physics();
+    }
+
+    /// Finds, keeps, updates, begins and ends contacts, and sets this
+    /// step's hand forces on the objects: the first half of [`Self::step`].
+    pub fn apply_hand_forces(&mut self) {
+        let mut step = std::mem::take(&mut self.scratch);
+        self.events.clear();
+        self.clear_forces();
+        self.keep_contacts(&mut step);
+        self.find_new_contacts(&mut step);
+        self.stability_limits(&mut step);
+        self.update_contacts(&mut step);
+        self.apply_forces(&step);
+        self.scratch = step;
+    }
+
+    /// Advances rapier by `dt` with the forces set by
+    /// [`Self::apply_hand_forces`]: gravity and object–object contacts are
+    /// the engine's. The poses of this step become the previous poses, for
+    /// bone velocities.
+    pub fn step_physics(&mut self) {
+        self.record(|| Call::Step);
+        self.physics.step();
+        self.time += self.config.dt as f64;
+        for hand in self.hands.iter_mut() {
+            hand.prev = hand.pose.clone();
+        }
+    }
+
+    /// The object as the contact law sees it this step, with its contact
+    /// stiffness and damping scaled by the stability limit.
+    fn object_view(&self, index: usize, limit: StabilityScale) -> ObjectView<'_> {
+        let slot = &self.objects[index];
+        let body = &self.physics.bodies[slot.body];
+        let collider = &self.physics.colliders[slot.collider];
+        ObjectView {
+            id: ObjectId(index as u32),
+            pose: *collider.position(),
+            shape: collider.shape(),
+            linvel: body.linvel(),
+            angvel: body.angvel(),
+            center_of_mass: body.center_of_mass(),
+            gamma: slot.gamma * limit.stiffness,
+            damping: self.nominal_damping(slot) * limit.damping,
+            cap: self.config.force_cap.then(|| ForceCap::for_diameter(slot.diameter)),
+            mu: slot.material.skin,
+        }
+    }
+
+    /// A bone's shape now and one step ago, if its hand is tracked.
+    fn motion(&self, hand: HandId, bone: Bone) -> Option<BoneMotion> {
+        let slot = self.hands.get(hand.0 as usize)?;
+        let now = slot.pose.as_ref()?;
+        let prev = slot.prev.as_ref().unwrap_or(now);
+        Some(BoneMotion {
+            now: now.bone(bone),
+            prev: prev.bone(bone),
+            palm_now: now.palm,
+            palm_prev: prev.palm,
+        })
+    }
+
+    fn law_settings(&self) -> LawSettings {
+        LawSettings {
+            dt: self.config.dt,
+            kinetic: self.config.kinetic,
+            max_penetration_speed: self.config.max_penetration_speed,
+            probe_offset: self.config.probe_offset,
+            patch: self.config.patch,
+        }
+    }
+
+    fn push_event(&mut self, kind: ContactEventKind, c: &Contact) {
+        let (hand, bone, object, point, time) = (c.hand, c.bone, c.object, c.point, self.time);
+        self.events.push(ContactEvent { kind, hand, bone, object, point, time });
+    }
+}
+
+/// A contact on its way through one step.
+#[derive(Debug)]
+pub(super) struct Candidate {
+    pub contact: Contact,
+    /// The closest features, if a stage has queried them this step.
+    pub proximity: Option<Proximity>,
+    pub motion: BoneMotion,
+    /// Found this step: it has not begun yet.
+    pub is_new: bool,
+}
+
+/// The order of [`InteractionWorld::contacts`]: by object, then hand, then
+/// bone, so each object's contacts are one run.
+fn contact_key(c: &Contact) -> (ObjectId, HandId, usize) {
+    (c.object, c.hand, c.bone.index())
+}
+
+/// Buffers kept from step to step, so a warm step allocates little.
+#[derive(Debug, Default)]
+pub(crate) struct StepScratch {
+    pub(super) candidates: Vec<Candidate>,
+    pub(super) found: Vec<Candidate>,
+    pub(super) detector: Detector,
+    /// Each object's bounding box this step.
+    pub(super) boxes: Vec<Aabb>,
+    pub(super) limits: Vec<StabilityScale>,
+    pub(super) patch: PatchScratch,
+    /// Per object: its contacts' sample forces on it this step, as
+    /// `(force, point)` in update order.
+    pub(super) forces: Vec<Vec<(Vec3, Vec3)>>,
+    /// The objects with forces this step, in the order first touched.
+    pub(super) touched: Vec<usize>,
+}
+
+impl StepScratch {
+    pub(super) fn new(config: &InteractionConfig) -> StepScratch {
+        let detector = Detector::new(config.contact_offset, config.release_offset);
+        StepScratch { detector, ..StepScratch::default() }
+    }
+}

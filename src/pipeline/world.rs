@@ -1,0 +1,381 @@
+//! [`InteractionWorld`]'s API: what a program calls to build a world, pose
+//! its hands and read what happened. One step is in [`super::step`].
+
+use super::config::InteractionConfig;
+use super::record::{Call, Recorder};
+use super::step::StepScratch;
+use crate::contact::{Contact, ContactEvent};
+use crate::friction;
+use crate::hand::{HandId, HandPose, PoseError, Side};
+use crate::scene::{GammaMode, Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
+use glam::{Quat, Vec3};
+use rapier3d::math::Pose;
+use std::any::Any;
+use rapier3d::prelude::{
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+    RigidBodyType,
+};
+
+/// Errors of [`InteractionWorld`] calls.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WorldError {
+    /// A hand pose was rejected.
+    #[error(transparent)]
+    Pose(#[from] PoseError),
+    /// An object or static description was rejected.
+    #[error(transparent)]
+    Object(#[from] ObjectError),
+    /// The config was rejected.
+    #[error(transparent)]
+    Config(#[from] super::ConfigError),
+    /// No hand has this id.
+    #[error("{0} does not exist")]
+    NoSuchHand(HandId),
+    /// No object has this id.
+    #[error("{0} does not exist")]
+    NoSuchObject(ObjectId),
+}
+
+/// Pose, velocity and hand force of an object.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ObjectState {
+    /// Body origin (m).
+    pub position: Vec3,
+    /// Orientation (unit quaternion).
+    pub rotation: Quat,
+    /// Linear velocity of the centre of mass (m/s).
+    pub linvel: Vec3,
+    /// Angular velocity (rad/s).
+    pub angvel: Vec3,
+    /// The total of the hand contacts' forces on it in the last step (N):
+    /// thesis Eq. 3.10, [`crate::friction::total_force`].
+    pub hand_force: Vec3,
+    /// Whether rapier has put it to sleep.
+    pub sleeping: bool,
+}
+
+/// What the world keeps per object besides rapier's body.
+pub(super) struct ObjectSlot {
+    pub name: String,
+    pub body: RigidBodyHandle,
+    pub collider: ColliderHandle,
+    pub material: Material,
+    /// Contact stiffness γ (N/m) before the stability limit.
+    pub gamma: f32,
+    /// Bounding-sphere diameter (m).
+    pub diameter: f32,
+    /// Mass (kg).
+    pub mass: f32,
+    /// Eq. 3.10 of the last step (N).
+    pub hand_force: Vec3,
+    /// Set by [`InteractionWorld::reseat_contacts`]: its contacts end at
+    /// the next step and begin afresh from the hand's pose then.
+    pub reseat: bool,
+}
+
+/// What the world keeps per hand.
+pub(super) struct HandSlot {
+    pub side: Side,
+    pub pose: Option<HandPose>,
+    /// The pose of the previous step, for bone velocities.
+    pub prev: Option<HandPose>,
+}
+
+/// A rapier world plus hands that act on its objects only through Coulomb
+/// friction contact forces.
+pub struct InteractionWorld {
+    pub(super) physics: PhysicsWorld,
+    pub(super) config: InteractionConfig,
+    pub(super) objects: Vec<ObjectSlot>,
+    pub(super) hands: Vec<HandSlot>,
+    /// Sorted by (object, hand, bone): each object's contacts are one run.
+    pub(super) contacts: Vec<Contact>,
+    pub(super) events: Vec<ContactEvent>,
+    pub(super) time: f64,
+    pub(super) scratch: StepScratch,
+    recorder: Option<Box<dyn Recorder>>,
+}
+
+impl InteractionWorld {
+    /// An empty world.
+    pub fn new(config: InteractionConfig) -> Result<Self, WorldError> {
+        config.validate()?;
+        let mut physics = PhysicsWorld::new();
+        physics.gravity = config.gravity;
+        config.set_rapier_parameters(&mut physics.integration_parameters);
+        Ok(InteractionWorld {
+            physics,
+            config,
+            objects: Vec::new(),
+            hands: Vec::new(),
+            contacts: Vec::new(),
+            events: Vec::new(),
+            time: 0.0,
+            scratch: StepScratch::new(&config),
+            recorder: None,
+        })
+    }
+
+    /// Shows every later accepted call to `recorder`; returns the one it
+    /// replaces.
+    pub fn set_recorder(&mut self, recorder: Box<dyn Recorder>) -> Option<Box<dyn Recorder>> {
+        self.recorder.replace(recorder)
+    }
+
+    /// Stops recording and hands the recorder back, if it is an `R`. A
+    /// recorder of another type stays in place.
+    pub fn take_recorder<R: Recorder>(&mut self) -> Option<R> {
+        let is_r = self.recorder.as_deref().is_some_and(|r| (r as &dyn Any).is::<R>());
+        let recorder: Box<dyn Any> = if is_r { self.recorder.take()? } else { return None };
+        recorder.downcast::<R>().ok().map(|r| *r)
+    }
+
+    pub(super) fn record(&mut self, call: impl FnOnce() -> Call) {
+        if let Some(recorder) = self.recorder.as_mut() {
+            recorder.record(&call());
+        }
+    }
+
+    /// The settings the world was made with.
+    pub fn config(&self) -> &InteractionConfig {
+        &self.config
+    }
+
+    /// The rapier world, for reading and for advanced set-up (joints,
+    /// solver parameters). Hands never appear in it.
+    pub fn physics(&self) -> &PhysicsWorld {
+        &self.physics
+    }
+
+    /// Mutable access to the rapier world, for solver settings, joints and
+    /// scripted set-up. Do not insert hand bones (a colliding bone would
+    /// bypass the friction model), and do not remove the bodies or colliders
+    /// of objects added with [`Self::add_object`]: the world indexes them.
+    pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
+        &mut self.physics
+    }
+
+    /// Simulated time (s).
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Adds static scenery (ground, tables). Hands do not touch it.
+    pub fn add_static(&mut self, desc: &StaticDesc) -> Result<ColliderHandle, WorldError> {
+        let shape = desc.validate()?;
+        let collider = ColliderBuilder::new(shape)
+            .position(Pose::from_parts(desc.position, desc.rotation))
+            .friction(desc.friction);
+        let body = self.physics.insert_body(RigidBodyBuilder::fixed());
+        self.record(|| Call::AddStatic(desc.clone()));
+        Ok(self.physics.insert_collider(collider, Some(body)))
+    }
+
+    /// Removes static scenery added by [`Self::add_static`], with its fixed
+    /// body, waking what rested on it. Returns `false` (and removes
+    /// nothing) for an unknown handle or an object's collider.
+    pub fn remove_static(&mut self, handle: ColliderHandle) -> bool {
+        if self.objects.iter().any(|o| o.collider == handle) {
+            return false;
+        }
+        let Some(body) = self.physics.colliders.get(handle).and_then(|c| c.parent()) else {
+            return false;
+        };
+        if !self.physics.bodies.get(body).is_some_and(|b| b.is_fixed()) {
+            return false;
+        }
+        self.physics.remove_body_with_colliders(body, true).is_some()
+    }
+
+    /// Adds a dynamic object that hands can touch.
+    pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
+        let shape = desc.validate()?;
+        let diameter = 2.0 * shape.compute_local_bounding_sphere().radius();
+        let gamma = match desc.gamma.unwrap_or(self.config.gamma) {
+            GammaMode::Fixed(g) => g,
+            GammaMode::Auto => {
+                let (mass, mu) = (desc.mass, desc.material.skin.static_mu);
+                friction::auto_gamma(mass, self.config.gravity.length(), mu, diameter)
+            }
+        };
+        if !(gamma.is_finite() && gamma > 0.0) {
+            let why = format!("automatic γ is {gamma}: needs gravity, μ_st and size > 0");
+            return Err(ObjectError::new(&desc.name, "gamma", why).into());
+        }
+        let pose = Pose::from_parts(desc.position, desc.rotation);
+        let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose));
+        let collider =
+            ColliderBuilder::new(shape).mass(desc.mass).friction(desc.material.surface_friction);
+        let collider = self.physics.insert_collider(collider, Some(body));
+        let id = ObjectId(self.objects.len() as u32);
+        self.objects.push(ObjectSlot {
+            name: desc.name.clone(),
+            body,
+            collider,
+            material: desc.material.clone(),
+            gamma,
+            diameter,
+            mass: desc.mass,
+            hand_force: Vec3::ZERO,
+            reseat: false,
+        });
+        self.record(|| Call::AddObject(desc.clone()));
+        Ok(id)
+    }
+
+    /// Adds a whole scene: its ground, statics, objects and towers, in that
+    /// order. Its gravity belongs to the config
+    /// ([`InteractionConfig::with_scene`]).
+    pub fn add_scene(&mut self, scene: &Scene) -> Result<(), WorldError> {
+        if let Some(g) = scene.ground {
+            self.add_static(&StaticDesc::ground(g.height, g.friction))?;
+        }
+        for s in &scene.statics {
+            self.add_static(s)?;
+        }
+        for o in &scene.objects {
+            self.add_object(o)?;
+        }
+        for block in scene.towers.iter().flat_map(|t| t.blocks()) {
+            self.add_object(&block)?;
+        }
+        Ok(())
+    }
+
+    /// Adds a hand with no pose yet (untracked).
+    pub fn add_hand(&mut self, side: Side) -> HandId {
+        self.hands.push(HandSlot { side, pose: None, prev: None });
+        self.record(|| Call::AddHand(side));
+        HandId(self.hands.len() as u32 - 1)
+    }
+
+    /// Sets a hand's tracked pose for the next step. Call it every step
+    /// (interpolating a slower tracker) so bone velocities are smooth.
+    /// A rejected pose leaves the world untouched.
+    pub fn set_hand_pose(&mut self, hand: HandId, pose: &HandPose) -> Result<(), WorldError> {
+        let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
+        pose.validate(hand.0)?;
+        slot.pose = Some(pose.clone());
+        self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
+        Ok(())
+    }
+
+    /// Marks a hand as untracked: its contacts end at the next step.
+    pub fn clear_hand_pose(&mut self, hand: HandId) -> Result<(), WorldError> {
+        let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
+        slot.pose = None;
+        slot.prev = None;
+        self.record(|| Call::ClearHandPose(hand.0));
+        Ok(())
+    }
+
+    /// The hand's current pose, if tracked.
+    pub fn hand_pose(&self, hand: HandId) -> Option<&HandPose> {
+        self.hands.get(hand.0 as usize)?.pose.as_ref()
+    }
+
+    /// Which hand it is.
+    pub fn hand_side(&self, hand: HandId) -> Option<Side> {
+        self.hands.get(hand.0 as usize).map(|h| h.side)
+    }
+
+    /// Hands added so far.
+    pub fn hand_count(&self) -> usize {
+        self.hands.len()
+    }
+
+    /// Objects added so far; their ids are `0..object_count()`.
+    pub fn object_count(&self) -> usize {
+        self.objects.len()
+    }
+
+    /// The ids of all objects, in order.
+    pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + use<> {
+        (0..self.objects.len() as u32).map(ObjectId)
+    }
+
+    /// The object's name, as given in its description.
+    pub fn object_name(&self, id: ObjectId) -> Option<&str> {
+        self.objects.get(id.0 as usize).map(|o| o.name.as_str())
+    }
+
+    /// The contact stiffness γ in use for an object (N/m).
+    pub fn object_gamma(&self, id: ObjectId) -> Option<f32> {
+        self.objects.get(id.0 as usize).map(|o| o.gamma)
+    }
+
+    /// The object's mass (kg).
+    pub fn object_mass(&self, id: ObjectId) -> Option<f32> {
+        self.objects.get(id.0 as usize).map(|o| o.mass)
+    }
+
+    /// The object's material.
+    pub fn object_material(&self, id: ObjectId) -> Option<&Material> {
+        self.objects.get(id.0 as usize).map(|o| &o.material)
+    }
+
+    /// The object's rapier body, for reading or scripted set-up.
+    pub fn object_body(&self, id: ObjectId) -> Option<RigidBodyHandle> {
+        self.objects.get(id.0 as usize).map(|o| o.body)
+    }
+
+    /// Holds an object fixed in place (`true`) or lets it move again: a
+    /// fixture, e.g. to keep an object where a recorded hand will close on
+    /// it. A locked object still has contacts and their forces computed;
+    /// they just do not move it.
+    pub fn set_object_locked(&mut self, id: ObjectId, locked: bool) -> Result<(), WorldError> {
+        let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        let kind = if locked { RigidBodyType::Fixed } else { RigidBodyType::Dynamic };
+        if let Some(body) = self.physics.bodies.get_mut(slot.body) {
+            body.set_body_type(kind, true);
+        }
+        self.record(|| Call::SetObjectLocked(id.0, locked));
+        Ok(())
+    }
+
+    /// Ends the object's contacts at the next step, to begin afresh from
+    /// the bones' pose then (an `Ended` then a `Began` event each).
+    ///
+    /// For a fixture released while the hand is not gripping it: contacts
+    /// formed while bones travelled through an immovable body hold that
+    /// whole sweep in their friction springs and contact points; once the
+    /// object is free, only where the hand is now should push it.
+    pub fn reseat_contacts(&mut self, id: ObjectId) -> Result<(), WorldError> {
+        let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        slot.reseat = true;
+        self.record(|| Call::ReseatContacts(id.0));
+        Ok(())
+    }
+
+    /// The current state of an object.
+    pub fn object_state(&self, id: ObjectId) -> Result<ObjectState, WorldError> {
+        let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        let body = &self.physics.bodies[slot.body];
+        Ok(ObjectState {
+            position: body.translation(),
+            rotation: *body.rotation(),
+            linvel: body.linvel(),
+            angvel: body.angvel(),
+            hand_force: slot.hand_force,
+            sleeping: body.is_sleeping(),
+        })
+    }
+
+    /// All active contacts after the last step, ordered by (object, hand,
+    /// bone).
+    pub fn contacts(&self) -> &[Contact] {
+        &self.contacts
+    }
+
+    /// The active contacts on one object, ordered by (hand, bone).
+    pub fn contacts_on(&self, id: ObjectId) -> &[Contact] {
+        let start = self.contacts.partition_point(|c| c.object < id);
+        let end = self.contacts.partition_point(|c| c.object <= id);
+        &self.contacts[start..end]
+    }
+
+    /// Contact begin/end events of the last step.
+    pub fn events(&self) -> &[ContactEvent] {
+        &self.events
+    }
+}

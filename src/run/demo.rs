@@ -1,0 +1,258 @@
+//! The headless demo: a scripted hand grasps, lifts, carries, turns and
+//! drops a cube, and reports what the cube did.
+
+use super::RunError;
+use super::drive::{Driver, PoseFn, StepView};
+use super::scenario::script::smoothstep;
+use crate::contact::ContactEventKind;
+use crate::friction::FrictionState;
+use crate::hand::{HandId, HandPose, Palm, Side};
+use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
+use crate::scene::{ObjectDesc, ObjectId, StaticDesc};
+use glam::{Quat, Vec3};
+
+/// A precision grasp from above: the thumb on the −x face of a cube, four
+/// fingertips on the +x face, the palm above. `closure` 0 leaves a 2 cm gap
+/// on each side; 1 sinks each distal pad `squeeze` metres into the faces.
+/// The cube is centred at the origin with half size `h`.
+pub fn claw_grasp(h: f32, closure: f32, squeeze: f32) -> HandPose {
+    let gap = 0.02;
+    let offset = |r: f32| h + r - squeeze * closure + gap * (1.0 - closure);
+    let palm = Palm::from_normal_direction(
+        Vec3::new(0.0, h + 0.025, 0.0),
+        -Vec3::Y,
+        Vec3::X,
+        Vec3::new(0.045, 0.01, 0.04),
+    )
+    .unwrap_or(Palm { center: Vec3::new(0.0, h + 0.025, 0.0), rotation: Quat::IDENTITY, half_extents: Vec3::new(0.045, 0.01, 0.04) });
+    let radii = [0.0095, 0.0085, 0.0085, 0.008, 0.007];
+    let finger_z = [0.0, -0.0225, -0.0075, 0.0075, 0.0225];
+    let joints = std::array::from_fn(|f| {
+        let r = radii[f];
+        let z = finger_z[f];
+        let x = offset(r);
+        // The thumb (f = 0) mirrors the fingers onto the −x face.
+        let s = if f == 0 { -1.0 } else { 1.0 };
+        [
+            Vec3::new(s * 0.035, h + 0.02, z),
+            Vec3::new(s * (x + 0.02), h + 0.008, z),
+            Vec3::new(s * x, h - 0.013, z),
+            Vec3::new(s * x, h - 0.035, z),
+        ]
+    });
+    HandPose::from_joints(palm, joints, radii)
+}
+
+/// Result of [`GraspLiftCarry::run`].
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct GraspReport {
+    /// Largest drift of the cube's position in the hand frame between the
+    /// closed grasp and the end of the carry (m).
+    pub max_drift: f32,
+    /// Largest drift of its orientation in the hand frame (degrees).
+    pub max_drift_deg: f32,
+    /// Cube height when the hand starts to open (m).
+    pub held_height: f32,
+    /// Cube height at the end, after the hand opened (m).
+    pub final_height: f32,
+    /// Hand contacts when the carry ended and after release.
+    pub contacts_held: usize,
+    pub contacts_after_release: usize,
+    /// Maximum cube speed over the run (m/s).
+    pub max_speed: f32,
+    pub timeline: Vec<TimelineRow>,
+}
+
+/// One printed row of the demo.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct TimelineRow {
+    pub t: f32,
+    pub phase: &'static str,
+    pub palm: [f32; 3],
+    pub cube: [f32; 3],
+    pub cube_speed: f32,
+    pub contacts_static: usize,
+    pub contacts_dynamic: usize,
+    pub contacts_separated: usize,
+    pub hand_force: f32,
+    pub began: usize,
+    pub ended: usize,
+}
+
+/// The headless demo and acceptance scene: thumb plus four fingers grasp a
+/// 5 cm, 50 g wooden cube, lift it 20 cm, turn the hand 90° and open.
+pub struct GraspLiftCarry {
+    pub world: InteractionWorld,
+    pub hand: HandId,
+    pub cube: ObjectId,
+    /// Half size of the cube (m).
+    pub half: f32,
+}
+
+impl GraspLiftCarry {
+    /// Phase boundaries (s).
+    pub const CLOSE: (f32, f32) = (0.5, 1.0);
+    pub const LIFT: (f32, f32) = (1.3, 2.3);
+    pub const TURN: (f32, f32) = (2.3, 3.3);
+    pub const OPEN: (f32, f32) = (3.8, 4.3);
+    pub const END: f32 = 5.0;
+    /// How far the hand lifts (m) and turns (rad, about +z).
+    pub const LIFT_HEIGHT: f32 = 0.2;
+    pub const TURN_ANGLE: f32 = std::f32::consts::FRAC_PI_2;
+    /// How deep each distal pad sinks into the cube when closed (m).
+    pub const SQUEEZE: f32 = 0.004;
+
+    pub fn new(config: InteractionConfig) -> Result<Self, WorldError> {
+        let half = 0.025;
+        let mut world = InteractionWorld::new(config)?;
+        world.add_static(&StaticDesc::ground(-half, 0.5))?;
+        let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * half), 0.05, Vec3::ZERO))?;
+        let hand = world.add_hand(Side::Right);
+        Ok(GraspLiftCarry { world, hand, cube, half })
+    }
+
+    pub fn phase(t: f32) -> &'static str {
+        match t {
+            t if t < Self::CLOSE.0 => "approach",
+            t if t < Self::CLOSE.1 => "close",
+            t if t < Self::LIFT.0 => "settle",
+            t if t < Self::LIFT.1 => "lift",
+            t if t < Self::TURN.1 => "turn",
+            t if t < Self::OPEN.0 => "hold",
+            t if t < Self::OPEN.1 => "open",
+            _ => "fall",
+        }
+    }
+
+    /// The hand's rigid motion at `t`: rotation about the cube's start
+    /// centre, then a translation.
+    pub fn hand_motion(t: f32) -> (Quat, Vec3) {
+        let lift = Self::LIFT_HEIGHT * smoothstep(Self::LIFT.0, Self::LIFT.1, t);
+        let turn = Self::TURN_ANGLE * smoothstep(Self::TURN.0, Self::TURN.1, t);
+        (Quat::from_rotation_z(turn), Vec3::new(0.0, lift, 0.0))
+    }
+
+    /// The scripted hand at `t` (s).
+    pub fn hand_pose(&self, t: f32) -> HandPose {
+        Self::pose_at(self.half, t)
+    }
+
+    /// The scripted hand at `t` (s) for a cube of half size `half` (m).
+    fn pose_at(half: f32, t: f32) -> HandPose {
+        let close = smoothstep(Self::CLOSE.0, Self::CLOSE.1, t);
+        let closure = close * (1.0 - smoothstep(Self::OPEN.0, Self::OPEN.1, t));
+        let (rot, shift) = Self::hand_motion(t);
+        claw_grasp(half, closure, Self::SQUEEZE).transformed(Vec3::ZERO, rot, shift)
+    }
+
+    /// Runs the whole script; `every` is the timeline's row interval (s).
+    pub fn run(mut self, every: f32) -> Result<GraspReport, RunError> {
+        let dt = self.world.config().dt;
+        let steps = (Self::END / dt).round() as usize;
+        let row_every = ((every / dt).round() as usize).max(1);
+        let open_step = (Self::OPEN.0 / dt).round() as usize;
+        let mut watch = Watch::new(self.cube, self.hand, row_every, open_step);
+        let half = self.half;
+        let mut driver = Driver::new(&mut self.world);
+        let script = PoseFn::new(Side::Right, move |t| Some(Self::pose_at(half, t as f32)));
+        driver.drive(self.hand, script)?;
+        driver.run(steps, &mut [&mut watch])?;
+        let s = self.world.object_state(self.cube)?;
+        Ok(GraspReport {
+            max_drift: watch.max_drift,
+            max_drift_deg: watch.max_drift_deg,
+            held_height: watch.held_height,
+            final_height: s.position.y,
+            contacts_held: watch.contacts_held,
+            contacts_after_release: self.world.contacts().len(),
+            max_speed: watch.max_speed,
+            timeline: watch.timeline,
+        })
+    }
+}
+
+/// What the demo follows after each step.
+struct Watch {
+    cube: ObjectId,
+    hand: HandId,
+    row_every: usize,
+    open_step: usize,
+    /// The cube's pose in the hand frame when the lift began.
+    reference: Option<(Vec3, Quat)>,
+    max_drift: f32,
+    max_drift_deg: f32,
+    max_speed: f32,
+    held_height: f32,
+    contacts_held: usize,
+    /// Events since the last row.
+    began: usize,
+    ended: usize,
+    timeline: Vec<TimelineRow>,
+}
+
+impl Watch {
+    fn new(cube: ObjectId, hand: HandId, row_every: usize, open_step: usize) -> Watch {
+        Watch {
+            cube,
+            hand,
+            row_every,
+            open_step,
+            reference: None,
+            max_drift: 0.0,
+            max_drift_deg: 0.0,
+            max_speed: 0.0,
+            held_height: 0.0,
+            contacts_held: 0,
+            began: 0,
+            ended: 0,
+            timeline: Vec::new(),
+        }
+    }
+}
+
+impl super::drive::Observer for Watch {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let world = step.world;
+        let t = step.t as f32;
+        let s = world.object_state(self.cube)?;
+        self.max_speed = self.max_speed.max(s.linvel.length());
+        for e in world.events() {
+            match e.kind {
+                ContactEventKind::Began => self.began += 1,
+                ContactEventKind::Ended => self.ended += 1,
+            }
+        }
+        // The cube's pose in the hand frame.
+        let (rot, shift) = GraspLiftCarry::hand_motion(t);
+        let rel_pos = rot.inverse() * (s.position - shift);
+        let rel_rot = rot.inverse() * s.rotation;
+        if t >= GraspLiftCarry::LIFT.0 && t < GraspLiftCarry::OPEN.0 {
+            let (p0, q0) = *self.reference.get_or_insert((rel_pos, rel_rot));
+            self.max_drift = self.max_drift.max((rel_pos - p0).length());
+            self.max_drift_deg = self.max_drift_deg.max(q0.angle_between(rel_rot).to_degrees());
+        }
+        let done = step.index + 1;
+        if done == self.open_step {
+            self.held_height = s.position.y;
+            self.contacts_held = world.contacts().len();
+        }
+        if done % self.row_every == 0 {
+            let count = |state| world.contacts().iter().filter(|c| c.state == state).count();
+            let palm = world.hand_pose(self.hand).map_or(Vec3::ZERO, |p| p.palm.center);
+            self.timeline.push(TimelineRow {
+                t,
+                phase: GraspLiftCarry::phase(t),
+                palm: palm.to_array(),
+                cube: s.position.to_array(),
+                cube_speed: s.linvel.length(),
+                contacts_static: count(FrictionState::Static),
+                contacts_dynamic: count(FrictionState::Dynamic),
+                contacts_separated: count(FrictionState::Separated),
+                hand_force: s.hand_force.length(),
+                began: std::mem::take(&mut self.began),
+                ended: std::mem::take(&mut self.ended),
+            });
+        }
+        Ok(())
+    }
+}

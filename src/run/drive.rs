@@ -1,0 +1,248 @@
+//! The driver loop, the one place where hands are posed and the world is
+//! stepped: sample every hand source at the physics clock, set or clear
+//! its pose, step, and show the step to every observer.
+//!
+//! Replays, scenarios, the live stream, the demo and the tests all run
+//! through [`Driver::run`]; what differs is where poses come from
+//! ([`HandSource`]) and who watches ([`Observer`]).
+
+use super::RunError;
+use crate::hand::{HandId, HandPose, HandSample, Side};
+use crate::input::playback::Playback;
+use crate::pipeline::InteractionWorld;
+
+/// Where one hand's poses come from, sampled on the physics clock.
+pub trait HandSource {
+    /// Which hand it is.
+    fn side(&self) -> Side;
+
+    /// The tracker's id for this hand, for trace lines; `None` if it has
+    /// none (the hand's index in the driver is used).
+    fn tracker_id(&self) -> Option<i64> {
+        None
+    }
+
+    /// The hand at `t` seconds after the run began, or `None` while it is
+    /// not tracked.
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError>;
+
+    /// Whether the source has nothing more to give (a live stream that
+    /// closed). The driver stops when every source has finished.
+    fn finished(&self) -> bool {
+        false
+    }
+}
+
+impl<S: HandSource + ?Sized> HandSource for Box<S> {
+    fn side(&self) -> Side {
+        (**self).side()
+    }
+
+    fn tracker_id(&self) -> Option<i64> {
+        (**self).tracker_id()
+    }
+
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        (**self).sample(t)
+    }
+
+    fn finished(&self) -> bool {
+        (**self).finished()
+    }
+}
+
+/// A hand posed by a function of time (s): scripted motion, generated or
+/// synthetic poses, tests.
+pub struct PoseFn<F> {
+    side: Side,
+    pose: F,
+}
+
+impl<F: FnMut(f64) -> Option<HandPose>> PoseFn<F> {
+    /// A `side` hand whose pose at `t` is `pose(t)`, or untracked for `None`.
+    pub fn new(side: Side, pose: F) -> Self {
+        PoseFn { side, pose }
+    }
+}
+
+impl<F: FnMut(f64) -> Option<HandPose>> HandSource for PoseFn<F> {
+    fn side(&self) -> Side {
+        self.side
+    }
+
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        Ok((self.pose)(t).map(HandSample::pose))
+    }
+}
+
+/// One hand of a recording, interpolated on the physics clock.
+#[derive(Debug, Clone, Copy)]
+pub struct RecordedHand<'a> {
+    /// The recording.
+    pub playback: &'a Playback,
+    /// Which of its tracks.
+    pub track: usize,
+}
+
+impl HandSource for RecordedHand<'_> {
+    fn side(&self) -> Side {
+        self.playback.tracks[self.track].side
+    }
+
+    fn tracker_id(&self) -> Option<i64> {
+        Some(self.playback.tracks[self.track].id)
+    }
+
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        Ok(self.playback.sample(self.track, t))
+    }
+}
+
+/// A driven hand as one step saw it.
+#[derive(Debug, Clone)]
+pub struct HandFrame {
+    /// The hand in the world.
+    pub id: HandId,
+    /// Its label on trace lines: the tracker's id, or its index.
+    pub label: i64,
+    /// Which hand.
+    pub side: Side,
+    /// Its pose this step, or `None` while untracked.
+    pub sample: Option<HandSample>,
+}
+
+/// One step, as observers see it after the step.
+pub struct StepView<'a> {
+    /// The world after the step.
+    pub world: &'a InteractionWorld,
+    /// The step's index in this run, from 0.
+    pub index: usize,
+    /// The time at the end of the step, on the driver's clock (s).
+    pub t: f64,
+    /// The driven hands, in the order they were added.
+    pub hands: &'a [HandFrame],
+}
+
+/// Watches a run step by step: trace writers, summaries, the scenario
+/// history, fixtures.
+pub trait Observer {
+    /// Before each step, with the world open to changes (releasing a
+    /// fixture, say). `t` is the step's start time on the driver's clock (s).
+    fn before_step(&mut self, _world: &mut InteractionWorld, _t: f64) -> Result<(), RunError> {
+        Ok(())
+    }
+
+    /// After each step.
+    fn after_step(&mut self, _step: &StepView) -> Result<(), RunError> {
+        Ok(())
+    }
+}
+
+/// `first`, then `rest`: one observer list for [`Driver::run`].
+pub fn observers<'a>(
+    first: Vec<&'a mut dyn Observer>,
+    rest: &'a mut [&mut dyn Observer],
+) -> Vec<&'a mut dyn Observer> {
+    let mut all = first;
+    for o in rest.iter_mut() {
+        all.push(&mut **o);
+    }
+    all
+}
+
+impl<F: FnMut(&StepView) -> Result<(), RunError>> Observer for F {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        self(step)
+    }
+}
+
+/// Drives a world: hand sources in, observers out.
+pub struct Driver<'w, 's> {
+    world: &'w mut InteractionWorld,
+    sources: Vec<Box<dyn HandSource + 's>>,
+    frames: Vec<HandFrame>,
+    /// The world's time when the driver took it (s).
+    start: f64,
+    /// Steps run so far.
+    steps: usize,
+}
+
+impl<'w, 's> Driver<'w, 's> {
+    /// A driver of `world`, whose clock starts at the world's time.
+    pub fn new(world: &'w mut InteractionWorld) -> Self {
+        let start = world.time();
+        Driver { world, sources: Vec::new(), frames: Vec::new(), start, steps: 0 }
+    }
+
+    /// Adds a hand to the world, posed by `source` from the next step on.
+    pub fn add_hand(&mut self, source: impl HandSource + 's) -> HandId {
+        let id = self.world.add_hand(source.side());
+        self.push(id, Box::new(source));
+        id
+    }
+
+    /// Poses a hand already in the world by `source`.
+    pub fn drive(&mut self, hand: HandId, source: impl HandSource + 's) -> Result<(), RunError> {
+        if self.world.hand_side(hand).is_none() {
+            return Err(crate::pipeline::WorldError::NoSuchHand(hand).into());
+        }
+        self.push(hand, Box::new(source));
+        Ok(())
+    }
+
+    fn push(&mut self, id: HandId, source: Box<dyn HandSource + 's>) {
+        let label = source.tracker_id().unwrap_or(self.sources.len() as i64);
+        self.frames.push(HandFrame { id, label, side: source.side(), sample: None });
+        self.sources.push(source);
+    }
+
+    /// The world being driven.
+    pub fn world(&self) -> &InteractionWorld {
+        self.world
+    }
+
+    /// The world being driven, to change between runs.
+    pub fn world_mut(&mut self) -> &mut InteractionWorld {
+        self.world
+    }
+
+    /// The time on the driver's clock after `steps` steps (s).
+    fn clock(&self, steps: usize) -> f64 {
+        self.start + steps as f64 * self.world.config().dt as f64
+    }
+
+    /// Runs up to `steps` steps; stops early, before a step, once every
+    /// source has finished. Each step: observers' `before_step`, every
+    /// source sampled and its hand posed or cleared, the world's step, then
+    /// observers' `after_step`. Returns the steps run.
+    pub fn run(
+        &mut self,
+        steps: usize,
+        observers: &mut [&mut dyn Observer],
+    ) -> Result<usize, RunError> {
+        for i in 0..steps {
+            let t = self.clock(self.steps);
+            for o in observers.iter_mut() {
+                o.before_step(self.world, t)?;
+            }
+            for (source, frame) in self.sources.iter_mut().zip(self.frames.iter_mut()) {
+                frame.sample = source.sample(t)?;
+                match &frame.sample {
+                    Some(s) => self.world.set_hand_pose(frame.id, &s.pose)?,
+                    None => self.world.clear_hand_pose(frame.id)?,
+                }
+            }
+            if !self.sources.is_empty() && self.sources.iter().all(|s| s.finished()) {
+                return Ok(i);
+            }
+            self.world.step();
+            self.steps += 1;
+            let view =
+                StepView { world: self.world, index: i, t: self.clock(self.steps), hands: &self.frames };
+            for o in observers.iter_mut() {
+                o.after_step(&view)?;
+            }
+        }
+        Ok(steps)
+    }
+}

@@ -1,0 +1,53 @@
+//! Running worlds: everything that drives an [`crate::InteractionWorld`]
+//! through time goes through one loop, [`drive::Driver`].
+//!
+//! * [`drive`]: the driver loop, hand sources and observers;
+//! * [`observe`]: the trace writer and the per-object summary;
+//! * [`replay`]: recordings replayed, with objects at a recorded grasp
+//!   ([`grasp`] finds where a recorded hand closes);
+//! * [`live`]: a live Leap Motion stream;
+//! * [`scenario`]: the interaction catalogue, scenario files and checks;
+//! * [`demo`]: the scripted grasp-lift-carry demo;
+//! * [`bench`]: the benchmark scene and its timing.
+
+pub mod bench;
+pub mod demo;
+pub mod drive;
+pub mod grasp;
+pub mod live;
+pub mod observe;
+pub mod replay;
+pub mod scenario;
+
+use crate::FileError;
+use crate::input::InputError;
+use crate::output::SessionError;
+use crate::pipeline::WorldError;
+
+/// Why a run failed: whatever it read, built, drove or wrote.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// A recording or stream was bad, or the stream failed.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// The world rejected a call.
+    #[error(transparent)]
+    World(#[from] WorldError),
+    /// A session could not be read, written or replayed.
+    #[error(transparent)]
+    Session(#[from] SessionError),
+    /// A scene or scenario file was bad.
+    #[error(transparent)]
+    File(#[from] FileError),
+    /// Writing an output (a trace) failed.
+    #[error("output: {0}")]
+    Output(#[from] std::io::Error),
+    /// An object was asked for at a grasp the recording does not have.
+    #[error("the recording has {found} grasps, so there is no grasp {}", wanted + 1)]
+    NoGrasp {
+        /// Grasps the recording has.
+        found: usize,
+        /// The grasp asked for (0 is the first).
+        wanted: usize,
+    },
+}

@@ -1,0 +1,218 @@
+//! Headless replay of a hand-tracking recording through the interaction
+//! world, with a summary, and objects put where the recorded hand grasps.
+
+use super::RunError;
+use super::drive::{self, Driver, Observer, RecordedHand};
+use super::grasp::{GraspSite, find_grasps};
+use super::observe::{ObjectSummary, Summary};
+use crate::input::playback::Playback;
+use crate::output::Session;
+use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
+use crate::scene::{ObjectDesc, ObjectId, ShapeDesc, StaticDesc};
+use glam::Vec3;
+
+/// The replay's numbers; `replay --json` prints exactly this.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct ReplaySummary {
+    /// The recording's name.
+    pub source: String,
+    /// Frames in the recording.
+    pub frames: usize,
+    /// Distinct tracked hands.
+    pub hands: usize,
+    /// Recording length (s).
+    pub duration: f64,
+    /// Physics steps run.
+    pub steps: usize,
+    /// Contacts begun over the replay.
+    pub contacts_begun: usize,
+    /// What each object did.
+    pub objects: Vec<ObjectSummary>,
+    /// True when every traced number was finite.
+    pub all_finite: bool,
+}
+
+/// A world to replay into, with a ground at y = 0, recording its session
+/// if `record` ([`Session::take`] gets it).
+pub fn replay_world(config: InteractionConfig, record: bool) -> Result<InteractionWorld, WorldError> {
+    let mut world = InteractionWorld::new(config)?;
+    if record {
+        Session::start(&mut world);
+    }
+    world.add_static(&StaticDesc::ground(0.0, 0.5))?;
+    Ok(world)
+}
+
+/// A world to replay into: ground at y = 0 plus the given objects.
+pub fn world_with_objects(
+    config: InteractionConfig,
+    objects: &[ObjectDesc],
+) -> Result<(InteractionWorld, Vec<ObjectId>), WorldError> {
+    let mut world = replay_world(config, false)?;
+    let ids = objects.iter().map(|o| world.add_object(o)).collect::<Result<Vec<_>, _>>()?;
+    Ok((world, ids))
+}
+
+/// An object to put where the recorded hand grasps: `SHAPE:SIZE_M:MASS_KG`
+/// with SHAPE `box` (SIZE the side) or `sphere` (SIZE the diameter).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GraspObject {
+    /// A sphere, else a box.
+    pub sphere: bool,
+    /// Side or diameter (m).
+    pub size: f32,
+    /// Mass (kg).
+    pub mass: f32,
+}
+
+/// Why a `SHAPE:SIZE_M:MASS_KG` text is not a [`GraspObject`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum GraspObjectError {
+    /// Not three `:`-separated parts.
+    #[error("expected SHAPE:SIZE_M:MASS_KG, e.g. box:0.045:0.05, got \"{0}\"")]
+    Form(String),
+    /// The shape is neither `box` nor `sphere`.
+    #[error("unknown shape \"{0}\" (box or sphere)")]
+    Shape(String),
+    /// A size or mass that is not a positive number.
+    #[error("{part} must be a positive number, got \"{text}\"")]
+    Number {
+        /// `SIZE_M` or `MASS_KG`.
+        part: &'static str,
+        /// What was given.
+        text: String,
+    },
+}
+
+impl std::str::FromStr for GraspObject {
+    type Err = GraspObjectError;
+    fn from_str(s: &str) -> Result<Self, GraspObjectError> {
+        let parts: Vec<&str> = s.split(':').collect();
+        let [shape, size, mass] = parts.as_slice() else {
+            return Err(GraspObjectError::Form(s.to_string()));
+        };
+        let sphere = match *shape {
+            "box" => false,
+            "sphere" => true,
+            other => return Err(GraspObjectError::Shape(other.to_string())),
+        };
+        let number = |part: &'static str, v: &str| {
+            v.parse::<f32>()
+                .ok()
+                .filter(|x| x.is_finite() && *x > 0.0)
+                .ok_or_else(|| GraspObjectError::Number { part, text: v.to_string() })
+        };
+        Ok(GraspObject { sphere, size: number("SIZE_M", size)?, mass: number("MASS_KG", mass)? })
+    }
+}
+
+/// An object held in place at a grasp site until the hand grips it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fixture {
+    /// The object held.
+    pub object: ObjectId,
+    /// Released when the hand grips it, or at the grasp's most closed
+    /// instant at the latest (s).
+    pub release_by: f64,
+}
+
+/// Places `object` at the site of the recording's `index`-th grasp (in
+/// time order), held fixed in place (as if on a support) until the hand
+/// grips it. The recorded hand grasped nothing, so without the fixture a
+/// finger arriving early would knock the object away before the others
+/// close on it.
+pub fn place_at_grasp(
+    world: &mut InteractionWorld,
+    playback: &Playback,
+    object: GraspObject,
+    index: usize,
+) -> Result<(Fixture, GraspSite), RunError> {
+    let grasps = find_grasps(playback, 0.005);
+    let site = *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
+    let half = 0.5 * object.size;
+    let shape = if object.sphere {
+        ShapeDesc::Sphere { radius: half }
+    } else {
+        ShapeDesc::Box { half_extents: Vec3::splat(half) }
+    };
+    let cube = ObjectDesc::cuboid("grasped", Vec3::splat(object.size), object.mass, site.point);
+    let id = world.add_object(&ObjectDesc { shape, ..cube })?;
+    world.set_object_locked(id, true)?;
+    Ok((Fixture { object: id, release_by: site.closed_at }, site))
+}
+
+/// Whether the hand contacts on an object could hold it up, without
+/// flinging it: some two pressing contacts push from roughly opposite
+/// sides (normals more than 120° apart), their static friction,
+/// μ_st·Σ f_n, exceeds the object's weight, and the hand force plus
+/// gravity would accelerate it by less than g.
+pub fn is_gripped(world: &InteractionWorld, id: ObjectId) -> bool {
+    let (Some(mass), Some(material), Ok(state)) =
+        (world.object_mass(id), world.object_material(id), world.object_state(id))
+    else {
+        return false;
+    };
+    let pressing: Vec<_> = world.contacts_on(id).iter().filter(|c| c.normal_force > 0.0).collect();
+    let opposed = pressing
+        .iter()
+        .enumerate()
+        .any(|(i, a)| pressing[i + 1..].iter().any(|b| a.normal.dot(b.normal) < -0.5));
+    let normal: f32 = pressing.iter().map(|c| c.normal_force).sum();
+    let gravity = world.config().gravity;
+    let weight = mass * gravity.length();
+    let net = state.hand_force + mass * gravity;
+    opposed && normal * material.skin.static_mu > weight && net.length() < weight
+}
+
+/// Releases each fixture when its object is gripped ([`is_gripped`]), or
+/// at its deadline with its contacts re-seated
+/// ([`InteractionWorld::reseat_contacts`]).
+#[derive(Debug, Clone)]
+pub struct Fixtures(pub Vec<Fixture>);
+
+impl Observer for Fixtures {
+    fn before_step(&mut self, world: &mut InteractionWorld, t: f64) -> Result<(), RunError> {
+        for f in std::mem::take(&mut self.0) {
+            let gripped = is_gripped(world, f.object);
+            if gripped || f.release_by <= t {
+                world.set_object_locked(f.object, false)?;
+                if !gripped {
+                    world.reseat_contacts(f.object)?;
+                }
+            } else {
+                self.0.push(f);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Replays `playback` into `world` for its whole duration (one hand per
+/// track), with `fixtures` released as [`Fixtures`] says, showing every
+/// step to `observers`. `source` names the recording in the summary.
+pub fn replay(
+    source: &str,
+    playback: &Playback,
+    world: &mut InteractionWorld,
+    fixtures: &[Fixture],
+    observers: &mut [&mut dyn Observer],
+) -> Result<ReplaySummary, RunError> {
+    let mut fixtures = Fixtures(fixtures.to_vec());
+    let mut summary = Summary::new(world)?;
+    let steps = (playback.duration / world.config().dt as f64).floor() as usize + 1;
+    let mut driver = Driver::new(world);
+    for track in 0..playback.tracks.len() {
+        driver.add_hand(RecordedHand { playback, track });
+    }
+    driver.run(steps, &mut drive::observers(vec![&mut fixtures, &mut summary], observers))?;
+    Ok(ReplaySummary {
+        source: source.to_string(),
+        frames: playback.frames,
+        hands: playback.tracks.len(),
+        duration: playback.duration,
+        steps,
+        contacts_begun: summary.contacts_begun,
+        objects: summary.objects(driver.world())?,
+        all_finite: summary.all_finite,
+    })
+}
