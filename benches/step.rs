@@ -16,7 +16,9 @@ fn bones_in_contact(c: &mut Criterion) {
         group.bench_function(format!("{bones}_bones/interaction_layer"), |b| {
             b.iter(|| black_box(&mut world).apply_hand_forces())
         });
-        group.bench_function(format!("{bones}_bones/full_step"), |b| b.iter(|| black_box(&mut world).step()));
+        group.bench_function(format!("{bones}_bones/full_step"), |b| {
+            b.iter(|| black_box(&mut world).step())
+        });
     }
     group.finish();
 }
@@ -27,7 +29,9 @@ fn reference_scene(c: &mut Criterion) {
         world.step();
     }
     let mut group = c.benchmark_group("reference_scene");
-    group.bench_function("interaction_layer", |b| b.iter(|| black_box(&mut world).apply_hand_forces()));
+    group.bench_function("interaction_layer", |b| {
+        b.iter(|| black_box(&mut world).apply_hand_forces())
+    });
     group.bench_function("full_step", |b| b.iter(|| black_box(&mut world).step()));
     group.finish();
 }

@@ -18,12 +18,15 @@ impl FileError {
 
     /// Reads a text file, naming it in the error.
     pub fn read(path: &Path) -> Result<String, FileError> {
-        std::fs::read_to_string(path).map_err(|e| FileError::new(&path.display().to_string(), e.to_string()))
+        std::fs::read_to_string(path)
+            .map_err(|e| FileError::new(&path.display().to_string(), e.to_string()))
     }
 
     /// Parses JSON text of `file`; a syntax or schema error gives its line
     /// and column.
     pub fn json<T: serde::de::DeserializeOwned>(file: &str, text: &str) -> Result<T, FileError> {
-        serde_json::from_str(text).map_err(|e| FileError::new(file, format!("line {} column {}: {e}", e.line(), e.column())))
+        serde_json::from_str(text).map_err(|e| {
+            FileError::new(file, format!("line {} column {}: {e}", e.line(), e.column()))
+        })
     }
 }

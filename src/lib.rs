@@ -45,7 +45,9 @@ pub mod scene;
 pub use contact::{Contact, ContactEvent, ContactEventKind};
 pub use file_error::FileError;
 pub use friction::{FrictionCoefficients, FrictionState, KineticFriction};
-pub use hand::{Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side};
+pub use hand::{
+    Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side,
+};
 pub use pipeline::{
     ConfigError, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError,
 };

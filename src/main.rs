@@ -8,7 +8,10 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 #[derive(Parser)]
-#[command(version, about = "Hands that move virtual objects only through Coulomb friction contact forces")]
+#[command(
+    version,
+    about = "Hands that move virtual objects only through Coulomb friction contact forces"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -117,24 +120,61 @@ fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
         println!("{}", serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?);
         return Ok(());
     }
-    println!("grasp-lift-carry: a 5 cm, 50 g wooden cube; thumb + 4 fingers; lift 20 cm; turn 90°; open");
-    println!("{:>5} {:<8} {:>22} {:>22} {:>7} {:>4} {:>4} {:>4} {:>7} {:>5} {:>5}",
-        "t[s]", "phase", "palm [m]", "cube [m]", "v[m/s]", "stat", "dyn", "sep", "F[N]", "begin", "end");
+    println!(
+        "grasp-lift-carry: a 5 cm, 50 g wooden cube; thumb + 4 fingers; lift 20 cm; turn 90°; open"
+    );
+    println!(
+        "{:>5} {:<8} {:>22} {:>22} {:>7} {:>4} {:>4} {:>4} {:>7} {:>5} {:>5}",
+        "t[s]",
+        "phase",
+        "palm [m]",
+        "cube [m]",
+        "v[m/s]",
+        "stat",
+        "dyn",
+        "sep",
+        "F[N]",
+        "begin",
+        "end"
+    );
     for r in &report.timeline {
         let v = |a: [f32; 3]| format!("({:6.3},{:6.3},{:6.3})", a[0], a[1], a[2]);
-        println!("{:5.2} {:<8} {:>22} {:>22} {:7.3} {:4} {:4} {:4} {:7.3} {:5} {:5}",
-            r.t, r.phase, v(r.palm), v(r.cube), r.cube_speed, r.contacts_static,
-            r.contacts_dynamic, r.contacts_separated, r.hand_force, r.began, r.ended);
+        println!(
+            "{:5.2} {:<8} {:>22} {:>22} {:7.3} {:4} {:4} {:4} {:7.3} {:5} {:5}",
+            r.t,
+            r.phase,
+            v(r.palm),
+            v(r.cube),
+            r.cube_speed,
+            r.contacts_static,
+            r.contacts_dynamic,
+            r.contacts_separated,
+            r.hand_force,
+            r.began,
+            r.ended
+        );
     }
     println!();
-    println!("cube drift in the hand while carried: {:.1} mm, {:.1}°", report.max_drift * 1e3, report.max_drift_deg);
-    println!("held at {:.3} m with {} contacts; after opening: {:.3} m, {} contacts",
-        report.held_height, report.contacts_held, report.final_height, report.contacts_after_release);
+    println!(
+        "cube drift in the hand while carried: {:.1} mm, {:.1}°",
+        report.max_drift * 1e3,
+        report.max_drift_deg
+    );
+    println!(
+        "held at {:.3} m with {} contacts; after opening: {:.3} m, {} contacts",
+        report.held_height,
+        report.contacts_held,
+        report.final_height,
+        report.contacts_after_release
+    );
     println!("max cube speed {:.2} m/s", report.max_speed);
     let held = report.held_height > 0.15;
     let dropped = report.final_height < report.held_height - 0.1;
-    println!("outcome: {} and {}", if held { "held through lift and turn" } else { "NOT held" },
-        if dropped { "fell when the hand opened" } else { "did NOT fall" });
+    println!(
+        "outcome: {} and {}",
+        if held { "held through lift and turn" } else { "NOT held" },
+        if dropped { "fell when the hand opened" } else { "did NOT fall" }
+    );
     if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
 }
 
@@ -149,7 +189,11 @@ fn parse_gamma(s: &str) -> Result<coulomb_hands::GammaMode, String> {
 }
 
 fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
-    let v: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>()).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|p| p.trim().parse::<f32>())
+        .collect::<Result<_, _>>()
+        .map_err(|e| e.to_string())?;
     match v.as_slice() {
         [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok(glam::Vec3::new(*x, *y, *z)),
         _ => Err(format!("expected three finite numbers \"x,y,z\", got \"{s}\"")),
@@ -221,7 +265,10 @@ fn replay(args: ReplayArgs) -> Result<(), RunError> {
     }
     println!("contacts begun: {}", summary.contacts_begun);
     for o in &summary.objects {
-        println!("object {}: moved {:.3} m, max speed {:.3} m/s", o.name, o.displacement, o.max_speed);
+        println!(
+            "object {}: moved {:.3} m, max speed {:.3} m/s",
+            o.name, o.displacement, o.max_speed
+        );
     }
     println!("all values finite: {}", summary.all_finite);
     Ok(())
@@ -277,10 +324,20 @@ fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
     if json {
         println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
     } else {
-        println!("replayed session {} ({} steps, {:.2} s)", file.display(), session.steps(), world.time());
+        println!(
+            "replayed session {} ({} steps, {:.2} s)",
+            file.display(),
+            session.steps(),
+            world.time()
+        );
         for o in &objects {
             let number = |k: &str| o[k].as_f64().unwrap_or(f64::NAN);
-            println!("object {}: moved {:.3} m, max speed {:.3} m/s", o["name"].as_str().unwrap_or(""), number("displacement"), number("max_speed"));
+            println!(
+                "object {}: moved {:.3} m, max speed {:.3} m/s",
+                o["name"].as_str().unwrap_or(""),
+                number("displacement"),
+                number("max_speed")
+            );
         }
     }
     Ok(())
@@ -318,7 +375,10 @@ fn scenario(
     let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
     let bar = if all && !json {
         let bar = indicatif::ProgressBar::new(scenarios.len() as u64);
-        bar.set_style(indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg} ({elapsed})").expect("valid template"));
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg} ({elapsed})")
+                .expect("valid template"),
+        );
         bar
     } else {
         indicatif::ProgressBar::hidden()
@@ -348,8 +408,15 @@ fn scenario(
     if all {
         println!("{:<20} {:<6} {:>7}  failed checks", "scenario", "result", "wall[s]");
         for (r, wall, _) in &reports {
-            let failed: Vec<&str> = r.checks.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect();
-            println!("{:<20} {:<6} {:>7.2}  {}", r.name, if r.passed { "pass" } else { "FAIL" }, wall, failed.join("; "));
+            let failed: Vec<&str> =
+                r.checks.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect();
+            println!(
+                "{:<20} {:<6} {:>7.2}  {}",
+                r.name,
+                if r.passed { "pass" } else { "FAIL" },
+                wall,
+                failed.join("; ")
+            );
         }
         let n = reports.iter().filter(|r| r.0.passed).count();
         println!("{n}/{} passed in {:.1} s", reports.len(), started.elapsed().as_secs_f64());
@@ -357,7 +424,13 @@ fn scenario(
         for (r, wall, description) in &reports {
             println!("{}: {description}", r.name);
             for c in &r.checks {
-                println!("  {:<4} {:<40} {:>10.4}  bound {}", if c.passed { "ok" } else { "FAIL" }, c.name, c.value, c.bound);
+                println!(
+                    "  {:<4} {:<40} {:>10.4}  bound {}",
+                    if c.passed { "ok" } else { "FAIL" },
+                    c.name,
+                    c.value,
+                    c.bound
+                );
             }
             println!("{} in {wall:.2} s", if r.passed { "passed" } else { "FAILED" });
         }
@@ -379,17 +452,35 @@ fn write_meshes(out: &std::path::Path) -> std::io::Result<()> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Command::Demo { json: false, thesis_kinetic: false, every: 0.25 }) {
+    let result = match cli.command.unwrap_or(Command::Demo {
+        json: false,
+        thesis_kinetic: false,
+        every: 0.25,
+    }) {
         Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
         Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
         Command::Mesh { out } => write_meshes(&out).map_err(|e| e.to_string()),
-        Command::Scenario { scenario: name, all, trace, json } => match scenario(name.as_deref(), all, trace.as_deref(), json) {
-            Ok(true) => Ok(()),
-            Ok(false) => Err("a scenario check failed".into()),
-            Err(e) => Err(e.to_string()),
-        },
-        Command::Live { url, seconds, device } => live(&url, seconds, device).map_err(|e| e.to_string()),
-        Command::Replay { file, trace, json, device, scene, record, object_at_grasp, gamma, grace } => replay(ReplayArgs {
+        Command::Scenario { scenario: name, all, trace, json } => {
+            match scenario(name.as_deref(), all, trace.as_deref(), json) {
+                Ok(true) => Ok(()),
+                Ok(false) => Err("a scenario check failed".into()),
+                Err(e) => Err(e.to_string()),
+            }
+        }
+        Command::Live { url, seconds, device } => {
+            live(&url, seconds, device).map_err(|e| e.to_string())
+        }
+        Command::Replay {
+            file,
+            trace,
+            json,
+            device,
+            scene,
+            record,
+            object_at_grasp,
+            gamma,
+            grace,
+        } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),
             json,

@@ -62,7 +62,9 @@ impl BoneAnchor {
     /// The anchored point p on the bone's surface, for a contact normal `n`.
     fn point(self, bone: BoneShape, n: Vec3) -> Vec3 {
         match (self, bone) {
-            (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => c.axis_point(s) - c.radius * n,
+            (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => {
+                c.axis_point(s) - c.radius * n
+            }
             (BoneAnchor::Palm { local }, BoneShape::Palm(p)) => p.to_world(local),
             // A bone never changes kind; keep a harmless answer for the type system.
             (_, BoneShape::Capsule(c)) => c.centroid(),
@@ -185,7 +187,8 @@ impl Anchor {
             let stretch_t = d - d.dot(at.n) * at.n;
             site.point + crate::friction::slipped_stretch(stretch_t, normal_force, mu, object.gamma)
         });
-        let Some(moved) = surface::slide(object.shape, pose, site, target, p_new, probe_offset) else {
+        let Some(moved) = surface::slide(object.shape, pose, site, target, p_new, probe_offset)
+        else {
             return;
         };
         let shift = moved.point - at.c;

@@ -112,8 +112,13 @@ fn proximity(
     let (hit, radius) = match bone {
         BoneShape::Capsule(c) => {
             let axis = Segment::new(c.a, c.b);
-            let hit =
-                query::contact(&Pose::identity(), &axis, obj_pose, obj_shape, prediction + c.radius);
+            let hit = query::contact(
+                &Pose::identity(),
+                &axis,
+                obj_pose,
+                obj_shape,
+                prediction + c.radius,
+            );
             (hit, c.radius)
         }
         BoneShape::Palm(p) => {

@@ -153,7 +153,8 @@ mod tests {
     #[test]
     fn sample_forces_sum_to_the_contact_force_whatever_the_deviation() {
         let total = Vec3::new(0.1, -2.0, 0.3);
-        let devs: Vec<Vec3> = (0..9).map(|i| Vec3::new(i as f32 * 1e-3, 0.0, -(i as f32) * 2e-4)).collect();
+        let devs: Vec<Vec3> =
+            (0..9).map(|i| Vec3::new(i as f32 * 1e-3, 0.0, -(i as f32) * 2e-4)).collect();
         let mut out = Vec::new();
         sample_forces(total, &devs, 400.0, &mut out);
         let sum: Vec3 = out.iter().copied().sum();

@@ -85,13 +85,24 @@ pub fn slide(
 /// Estimation"); it centres C on the overlap of a flat bone and a flat face
 /// instead of at whichever corner the closest-feature query returned.
 /// Falls back to `near` when the ray misses or lands on another face.
-pub fn locate_contact(shape: &dyn Shape, pose: &Pose, near: SurfacePoint, centre: Vec3, reach: f32) -> SurfacePoint {
+pub fn locate_contact(
+    shape: &dyn Shape,
+    pose: &Pose,
+    near: SurfacePoint,
+    centre: Vec3,
+    reach: f32,
+) -> SurfacePoint {
     let n = near.normal;
     // Start outside the object on the bone's side of the face.
     let back = (centre - near.point).dot(n).max(0.0) + reach;
     let origin = centre - (centre - near.point).dot(n) * n + back * n;
     match cast(shape, pose, origin, -n, back + reach, n) {
-        Some(hit) if hit.normal.dot(n) > 0.9 && (hit.point - near.point).length() <= reach + (centre - near.point).length() => hit,
+        Some(hit)
+            if hit.normal.dot(n) > 0.9
+                && (hit.point - near.point).length() <= reach + (centre - near.point).length() =>
+        {
+            hit
+        }
         _ => near,
     }
 }

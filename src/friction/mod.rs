@@ -124,8 +124,11 @@ pub fn contact_law(
 
 impl ResolvedForce {
     /// No force: a bone that does not press.
-    pub const SEPARATED: ResolvedForce =
-        ResolvedForce { normal: Vec3::ZERO, tangential: Vec3::ZERO, state: FrictionState::Separated };
+    pub const SEPARATED: ResolvedForce = ResolvedForce {
+        normal: Vec3::ZERO,
+        tangential: Vec3::ZERO,
+        state: FrictionState::Separated,
+    };
 
     /// The force applied to the object: the opposite of the reaction (N).
     pub fn on_object(&self) -> Vec3 {

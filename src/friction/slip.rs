@@ -45,7 +45,8 @@ mod tests {
     use super::*;
 
     const MU: FrictionCoefficients = FrictionCoefficients { static_mu: 0.5, dynamic_mu: 0.4 };
-    const ALUMINIUM: FrictionCoefficients = FrictionCoefficients { static_mu: 0.38, dynamic_mu: 0.6 };
+    const ALUMINIUM: FrictionCoefficients =
+        FrictionCoefficients { static_mu: 0.38, dynamic_mu: 0.6 };
 
     #[test]
     fn kinetic_stretch_balances_kinetic_friction() {

@@ -103,7 +103,12 @@ impl std::fmt::Display for Bone {
         match self {
             Bone::Palm => write!(f, "palm"),
             Bone::Finger(finger, phalanx) => {
-                write!(f, "{}-{}", format!("{finger:?}").to_lowercase(), format!("{phalanx:?}").to_lowercase())
+                write!(
+                    f,
+                    "{}-{}",
+                    format!("{finger:?}").to_lowercase(),
+                    format!("{phalanx:?}").to_lowercase()
+                )
             }
         }
     }
@@ -239,7 +244,9 @@ pub const MAX_COORDINATE: f32 = 1.0e4;
 pub enum PoseError {
     #[error("hand {hand}: bone {bone}: {field} is not finite")]
     NonFinite { hand: u32, bone: Bone, field: &'static str },
-    #[error("hand {hand}: bone {bone}: {field} is {value} m from the origin (limit {MAX_COORDINATE} m)")]
+    #[error(
+        "hand {hand}: bone {bone}: {field} is {value} m from the origin (limit {MAX_COORDINATE} m)"
+    )]
     OutOfRange { hand: u32, bone: Bone, field: &'static str, value: f32 },
     #[error("hand {hand}: bone {bone}: radius {radius} m must be positive")]
     BadRadius { hand: u32, bone: Bone, radius: f32 },
@@ -259,7 +266,11 @@ impl HandPose {
     /// joints base → tip of that finger, `radii[finger]` its capsule radius.
     pub fn from_joints(palm: Palm, joints: [[Vec3; 4]; 5], radii: [f32; 5]) -> HandPose {
         let fingers = std::array::from_fn(|f| {
-            std::array::from_fn(|p| Capsule { a: joints[f][p], b: joints[f][p + 1], radius: radii[f] })
+            std::array::from_fn(|p| Capsule {
+                a: joints[f][p],
+                b: joints[f][p + 1],
+                radius: radii[f],
+            })
         });
         HandPose { palm, fingers }
     }

@@ -82,7 +82,9 @@ impl HandRig {
         let m = self.mirror();
         let h = self.palm_half_extents;
         match finger {
-            Finger::Thumb => (Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.6), self.thumb_direction(0.0)),
+            Finger::Thumb => {
+                (Vec3::new(-m * h.x * 0.9, 0.0, -h.z * 0.6), self.thumb_direction(0.0))
+            }
             f => {
                 let slot = f as usize as f32 - 1.0; // 0..3 from index to pinky
                 (Vec3::new(m * h.x * (-0.675 + 0.45 * slot), 0.0, h.z), Vec3::Z)
@@ -112,14 +114,25 @@ impl HandRig {
     /// As [`Self::pose`], with the thumb swung by `opposition ∈ [0, 1]`
     /// ([`Self::thumb_direction`]). The abducted thumb flexes towards the
     /// palm normal; the opposed one across the palm, towards the fingers.
-    pub fn pose_opposed(&self, palm_center: Vec3, rotation: Quat, curl: [f32; 5], opposition: f32) -> HandPose {
+    pub fn pose_opposed(
+        &self,
+        palm_center: Vec3,
+        rotation: Quat,
+        curl: [f32; 5],
+        opposition: f32,
+    ) -> HandPose {
         let joints = Articulation { flex: curl.map(|c| [c; 3]), opposition, spread_deg: [0.0; 4] };
         self.pose_articulated(palm_center, rotation, &joints)
     }
 
     /// The general pose: the palm at `palm_center` turned by `rotation`, and
     /// every joint set by `joints` ([`Articulation`]).
-    pub fn pose_articulated(&self, palm_center: Vec3, rotation: Quat, joints: &Articulation) -> HandPose {
+    pub fn pose_articulated(
+        &self,
+        palm_center: Vec3,
+        rotation: Quat,
+        joints: &Articulation,
+    ) -> HandPose {
         let Articulation { flex, opposition, spread_deg } = *joints;
         let palm = Palm { center: palm_center, rotation, half_extents: self.palm_half_extents };
         let m = self.mirror();
@@ -182,8 +195,15 @@ mod tests {
         let spread = rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints);
         spread.validate(0).unwrap();
         let (tip, straight) = (spread.fingers[1][2].b, flat.fingers[1][2].b);
-        assert!(tip.x < straight.x - 0.02 && tip.y.abs() < 1e-6, "index tip {tip:?} vs {straight:?}");
-        assert!(gap < 0.022 && pinch.fingers[0][2].b.y > 0.03, "thumb–index gap {gap}, thumb tip {:?}", pinch.fingers[0][2].b);
+        assert!(
+            tip.x < straight.x - 0.02 && tip.y.abs() < 1e-6,
+            "index tip {tip:?} vs {straight:?}"
+        );
+        assert!(
+            gap < 0.022 && pinch.fingers[0][2].b.y > 0.03,
+            "thumb–index gap {gap}, thumb tip {:?}",
+            pinch.fingers[0][2].b
+        );
         let left = HandRig::adult(Side::Left).pose(Vec3::ZERO, Quat::IDENTITY, [0.0; 5]);
         assert!(left.fingers[0][0].a.x > 0.0);
     }
@@ -201,7 +221,10 @@ mod tests {
         let dir = (index[2].b - index[0].a).normalize();
         let want = Vec3::new(0.0, 35f32.to_radians().sin(), 35f32.to_radians().cos());
         assert!(dir.distance(want) < 1e-5, "{dir:?}");
-        assert!((index[2].b.distance(index[0].a) - 0.085).abs() < 1e-5, "a straight finger spans its bone lengths");
+        assert!(
+            (index[2].b.distance(index[0].a) - 0.085).abs() < 1e-5,
+            "a straight finger spans its bone lengths"
+        );
         // Knuckle flexion with the finger joints opening keeps the middle
         // fingertip in the plane z ≈ const while it moves 2 cm along y: a
         // stroke across a surface facing the fingers.
@@ -214,6 +237,9 @@ mod tests {
         assert!(b.y - a.y > 0.015 && (b.z - a.z).abs() < 0.004, "{a:?} → {b:?}");
         // Equal thirds are the plain curl.
         joints.flex = [[0.4; 3]; 5];
-        assert_eq!(rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints), rig.pose(Vec3::ZERO, Quat::IDENTITY, [0.4; 5]));
+        assert_eq!(
+            rig.pose_articulated(Vec3::ZERO, Quat::IDENTITY, &joints),
+            rig.pose(Vec3::ZERO, Quat::IDENTITY, [0.4; 5])
+        );
     }
 }

@@ -54,7 +54,11 @@ impl Conversion {
     /// frame to the forward-facing (head-mounted) one:
     /// x → −x, y → −z, z → −y.
     pub fn desktop_to_hmd() -> Self {
-        let m = Mat3::from_cols(Vec3::new(-1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -1.0), Vec3::new(0.0, -1.0, 0.0));
+        let m = Mat3::from_cols(
+            Vec3::new(-1.0, 0.0, 0.0),
+            Vec3::new(0.0, 0.0, -1.0),
+            Vec3::new(0.0, -1.0, 0.0),
+        );
         Conversion { affine: Affine3A::from_mat3(m) }
     }
 
@@ -65,7 +69,9 @@ impl Conversion {
 
     /// `R_Mount = R_x(α) · R_y(β) · R_z(γ)` for a tilted mount (radians).
     pub fn mount_rotation(alpha: f32, beta: f32, gamma: f32) -> Self {
-        let r = Mat3::from_rotation_x(alpha) * Mat3::from_rotation_y(beta) * Mat3::from_rotation_z(gamma);
+        let r = Mat3::from_rotation_x(alpha)
+            * Mat3::from_rotation_y(beta)
+            * Mat3::from_rotation_z(gamma);
         Conversion { affine: Affine3A::from_mat3(r) }
     }
 
@@ -100,7 +106,11 @@ impl Conversion {
     /// A head-mounted Leap Motion (§3.8.1): desktop→HMD, mm→m, the mount's
     /// rotation then translation (in metres, after the unit change), then
     /// the head pose.
-    pub fn leap_head_mounted(mount: Vec3, mount_rotation: (f32, f32, f32), head: (Quat, Vec3)) -> Self {
+    pub fn leap_head_mounted(
+        mount: Vec3,
+        mount_rotation: (f32, f32, f32),
+        head: (Quat, Vec3),
+    ) -> Self {
         Self::desktop_to_hmd()
             .then(Self::mm_to_m())
             .then(Self::mount_rotation(mount_rotation.0, mount_rotation.1, mount_rotation.2))
@@ -151,7 +161,8 @@ mod tests {
     fn mount_presets_and_units() {
         assert_eq!(MountPreset::OculusDk2.translation(), Vec3::new(0.0, 0.0, 0.08));
         assert_eq!(MountPreset::HoloLens.translation(), Vec3::new(0.0, 0.07, 0.05));
-        let c = Conversion::mm_to_m().then(Conversion::mount_translation(MountPreset::HoloLens.translation()));
+        let c = Conversion::mm_to_m()
+            .then(Conversion::mount_translation(MountPreset::HoloLens.translation()));
         assert!(close(c.point(Vec3::new(100.0, 0.0, -50.0)), Vec3::new(0.1, 0.07, 0.0)));
         assert!((c.length(18.0) - 0.018).abs() < 1e-7);
     }
@@ -179,7 +190,11 @@ mod tests {
         // A point 300 mm above the device (desktop frame) on a DK2 worn at
         // (0, 1.6, 0) turned 90° left (about +y).
         let head = (Quat::from_rotation_y(std::f32::consts::FRAC_PI_2), Vec3::new(0.0, 1.6, 0.0));
-        let c = Conversion::leap_head_mounted(MountPreset::OculusDk2.translation(), (0.0, 0.0, 0.0), head);
+        let c = Conversion::leap_head_mounted(
+            MountPreset::OculusDk2.translation(),
+            (0.0, 0.0, 0.0),
+            head,
+        );
         // desktop→HMD: (0, 0, -300) mm; → (0, 0, -0.3) m; + mount: (0, 0, -0.22);
         // head yaw +90° takes -z to -x: (-0.22, 0, 0); + head: (-0.22, 1.6, 0).
         assert!(close(c.point(Vec3::new(0.0, 300.0, 0.0)), Vec3::new(-0.22, 1.6, 0.0)));

@@ -78,13 +78,24 @@ pub mod mediapipe {
     pub const COUNT: usize = 21;
 }
 
-fn check(layout: &'static str, joints: impl Iterator<Item = (Vec3, f32)>) -> Result<(), LayoutError> {
+fn check(
+    layout: &'static str,
+    joints: impl Iterator<Item = (Vec3, f32)>,
+) -> Result<(), LayoutError> {
     for (i, (p, r)) in joints.enumerate() {
         if !p.is_finite() {
-            return Err(LayoutError { layout, joint: i, reason: format!("position {p:?} is not finite") });
+            return Err(LayoutError {
+                layout,
+                joint: i,
+                reason: format!("position {p:?} is not finite"),
+            });
         }
         if !(r.is_finite() && r >= 0.0) {
-            return Err(LayoutError { layout, joint: i, reason: format!("radius {r} is not a finite non-negative number") });
+            return Err(LayoutError {
+                layout,
+                joint: i,
+                reason: format!("radius {r} is not a finite non-negative number"),
+            });
         }
     }
     Ok(())
@@ -93,7 +104,11 @@ fn check(layout: &'static str, joints: impl Iterator<Item = (Vec3, f32)>) -> Res
 /// The four joints base → tip of each finger, thumb first, given the index
 /// of the thumb's first used joint and of the index finger's metacarpal in
 /// a layout with 4 thumb joints and 5 joints per other finger.
-fn finger_joints(position: impl Fn(usize) -> Vec3, thumb: usize, index_metacarpal: usize) -> [[Vec3; 4]; 5] {
+fn finger_joints(
+    position: impl Fn(usize) -> Vec3,
+    thumb: usize,
+    index_metacarpal: usize,
+) -> [[Vec3; 4]; 5] {
     std::array::from_fn(|f| {
         // The thumb uses all four of its joints; other fingers skip their
         // metacarpal joint (inside the palm).
@@ -148,12 +163,21 @@ fn tracked(
 
 /// OpenXR `XR_EXT_hand_tracking` joints (all 26, in `XrHandJointEXT`
 /// order) to a tracked hand in metres.
-pub fn from_openxr(id: i64, side: Side, joints: &[Joint; openxr::COUNT]) -> Result<TrackedHand, LayoutError> {
+pub fn from_openxr(
+    id: i64,
+    side: Side,
+    joints: &[Joint; openxr::COUNT],
+) -> Result<TrackedHand, LayoutError> {
     check("openxr", joints.iter().map(|j| (j.position, j.radius)))?;
     let palm = joints[openxr::PALM];
-    let fingers = finger_joints(|i| joints[i].position, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
+    let fingers =
+        finger_joints(|i| joints[i].position, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
     let widths = std::array::from_fn(|f| {
-        let knuckle = if f == 0 { openxr::THUMB_METACARPAL + 1 } else { openxr::INDEX_METACARPAL + 5 * (f - 1) + 1 };
+        let knuckle = if f == 0 {
+            openxr::THUMB_METACARPAL + 1
+        } else {
+            openxr::INDEX_METACARPAL + 5 * (f - 1) + 1
+        };
         2.0 * joints[knuckle].radius
     });
     let normal = (palm.orientation * -Vec3::Y).normalize_or_zero();
@@ -164,11 +188,20 @@ pub fn from_openxr(id: i64, side: Side, joints: &[Joint; openxr::COUNT]) -> Resu
 
 /// WebXR Hand Input joints (all 25, in `XRHandJoint` order) to a tracked
 /// hand in metres.
-pub fn from_webxr(id: i64, side: Side, joints: &[Joint; webxr::COUNT]) -> Result<TrackedHand, LayoutError> {
+pub fn from_webxr(
+    id: i64,
+    side: Side,
+    joints: &[Joint; webxr::COUNT],
+) -> Result<TrackedHand, LayoutError> {
     check("webxr", joints.iter().map(|j| (j.position, j.radius)))?;
-    let fingers = finger_joints(|i| joints[i].position, webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL);
+    let fingers =
+        finger_joints(|i| joints[i].position, webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL);
     let widths = std::array::from_fn(|f| {
-        let knuckle = if f == 0 { webxr::THUMB_METACARPAL + 1 } else { webxr::INDEX_METACARPAL + 5 * (f - 1) + 1 };
+        let knuckle = if f == 0 {
+            webxr::THUMB_METACARPAL + 1
+        } else {
+            webxr::INDEX_METACARPAL + 5 * (f - 1) + 1
+        };
         2.0 * joints[knuckle].radius
     });
     let palm = palm_from_knuckles(side, joints[webxr::WRIST].position, &fingers);
@@ -178,10 +211,16 @@ pub fn from_webxr(id: i64, side: Side, joints: &[Joint; webxr::COUNT]) -> Result
 
 /// MediaPipe Hands world landmarks (21, metres, already y-up) to a tracked
 /// hand in metres.
-pub fn from_mediapipe(id: i64, side: Side, landmarks: &[Vec3; mediapipe::COUNT]) -> Result<TrackedHand, LayoutError> {
+pub fn from_mediapipe(
+    id: i64,
+    side: Side,
+    landmarks: &[Vec3; mediapipe::COUNT],
+) -> Result<TrackedHand, LayoutError> {
     check("mediapipe", landmarks.iter().map(|p| (*p, 0.0)))?;
     // MediaPipe numbers each finger's 4 landmarks consecutively.
-    let fingers = std::array::from_fn(|f| std::array::from_fn(|j| landmarks[mediapipe::THUMB_CMC + 4 * f + j]));
+    let fingers = std::array::from_fn(|f| {
+        std::array::from_fn(|j| landmarks[mediapipe::THUMB_CMC + 4 * f + j])
+    });
     let widths = super::leap::DEFAULT_WIDTHS_MM.map(|w| w * 0.001);
     let palm = palm_from_knuckles(side, landmarks[mediapipe::WRIST], &fingers);
     Ok(tracked(id, side, palm, fingers, None, widths))
@@ -196,17 +235,23 @@ pub fn mediapipe_to_y_up() -> Conversion {
 /// The joints a tracker in `layout` would report for `hand` (metres),
 /// for tests and for exporting. Joint frames are built from the bones.
 pub fn to_openxr(hand: &TrackedHand) -> [Joint; openxr::COUNT] {
-    let mut out = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; openxr::COUNT];
+    let mut out =
+        [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; openxr::COUNT];
     let palm_rot = frame(hand.palm_normal, hand.direction);
     out[openxr::PALM] = Joint { position: hand.palm_position, orientation: palm_rot, radius: 0.0 };
-    out[openxr::WRIST] = Joint { position: hand.palm_position - hand.direction * 0.05, orientation: palm_rot, radius: 0.0 };
+    out[openxr::WRIST] = Joint {
+        position: hand.palm_position - hand.direction * 0.05,
+        orientation: palm_rot,
+        radius: 0.0,
+    };
     fill_fingers(hand, &mut out, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL, palm_rot);
     out
 }
 
 /// As [`to_openxr`], in WebXR order (no palm joint).
 pub fn to_webxr(hand: &TrackedHand, wrist: Vec3) -> [Joint; webxr::COUNT] {
-    let mut out = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; webxr::COUNT];
+    let mut out =
+        [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.0 }; webxr::COUNT];
     let palm_rot = frame(hand.palm_normal, hand.direction);
     out[webxr::WRIST] = Joint { position: wrist, orientation: palm_rot, radius: 0.0 };
     fill_fingers(hand, &mut out, webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL, palm_rot);
@@ -233,19 +278,34 @@ fn frame(palm_normal: Vec3, forward: Vec3) -> Quat {
     Quat::from_mat3(&glam::Mat3::from_cols(x, y, z)).normalize()
 }
 
-fn fill_fingers(hand: &TrackedHand, out: &mut [Joint], thumb: usize, index_metacarpal: usize, palm_rot: Quat) {
+fn fill_fingers(
+    hand: &TrackedHand,
+    out: &mut [Joint],
+    thumb: usize,
+    index_metacarpal: usize,
+    palm_rot: Quat,
+) {
     for f in 0..5 {
         let radius = 0.5 * hand.widths[f];
         let first = if f == 0 { thumb } else { index_metacarpal + 5 * (f - 1) + 1 };
         if f > 0 {
             // The metacarpal joint, inside the palm: the tracked one, or
             // else halfway from the palm.
-            let position = hand.carps.map_or(0.5 * (hand.palm_position + hand.joints[f][0]), |c| c[f - 1]);
+            let position =
+                hand.carps.map_or(0.5 * (hand.palm_position + hand.joints[f][0]), |c| c[f - 1]);
             out[first - 1] = Joint { position, orientation: palm_rot, radius };
         }
         for j in 0..4 {
-            let towards = if j < 3 { hand.joints[f][j + 1] - hand.joints[f][j] } else { hand.joints[f][3] - hand.joints[f][2] };
-            out[first + j] = Joint { position: hand.joints[f][j], orientation: frame(hand.palm_normal, towards), radius };
+            let towards = if j < 3 {
+                hand.joints[f][j + 1] - hand.joints[f][j]
+            } else {
+                hand.joints[f][3] - hand.joints[f][2]
+            };
+            out[first + j] = Joint {
+                position: hand.joints[f][j],
+                orientation: frame(hand.palm_normal, towards),
+                radius,
+            };
         }
     }
 }
@@ -257,13 +317,21 @@ mod tests {
     #[test]
     fn index_arithmetic_matches_the_published_orders() {
         // OpenXR: INDEX_PROXIMAL = 7, MIDDLE_PROXIMAL = 12, LITTLE_TIP = 25.
-        let f = finger_joints(|i| Vec3::splat(i as f32), openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
+        let f = finger_joints(
+            |i| Vec3::splat(i as f32),
+            openxr::THUMB_METACARPAL,
+            openxr::INDEX_METACARPAL,
+        );
         assert_eq!(f[0], [2.0, 3.0, 4.0, 5.0].map(Vec3::splat));
         assert_eq!(f[1][0], Vec3::splat(7.0));
         assert_eq!(f[2][0], Vec3::splat(12.0));
         assert_eq!(f[4][3], Vec3::splat(25.0));
         // WebXR: thumb 1..=4, index-finger-phalanx-proximal = 6, pinky tip = 24.
-        let w = finger_joints(|i| Vec3::splat(i as f32), webxr::THUMB_METACARPAL, webxr::INDEX_METACARPAL);
+        let w = finger_joints(
+            |i| Vec3::splat(i as f32),
+            webxr::THUMB_METACARPAL,
+            webxr::INDEX_METACARPAL,
+        );
         assert_eq!(w[0][0], Vec3::splat(1.0));
         assert_eq!(w[1][0], Vec3::splat(6.0));
         assert_eq!(w[4][3], Vec3::splat(24.0));
@@ -278,7 +346,8 @@ mod tests {
 
     #[test]
     fn bad_joints_name_the_layout_and_joint() {
-        let mut j = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.01 }; openxr::COUNT];
+        let mut j = [Joint { position: Vec3::ZERO, orientation: Quat::IDENTITY, radius: 0.01 };
+            openxr::COUNT];
         j[9].position.x = f32::NAN;
         let e = from_openxr(0, Side::Right, &j).unwrap_err();
         assert_eq!((e.layout, e.joint), ("openxr", 9));

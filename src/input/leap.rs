@@ -28,8 +28,18 @@ pub struct LeapRecording {
     pub frames: Vec<TrackingFrame>,
 }
 
-fn err(source: &str, frame: Option<usize>, field: impl Into<String>, reason: impl Into<String>) -> InputError {
-    InputError { source_name: source.to_string(), frame, field: field.into(), reason: reason.into() }
+fn err(
+    source: &str,
+    frame: Option<usize>,
+    field: impl Into<String>,
+    reason: impl Into<String>,
+) -> InputError {
+    InputError {
+        source_name: source.to_string(),
+        frame,
+        field: field.into(),
+        reason: reason.into(),
+    }
 }
 
 /// Reads a `.json.lz` or `.json` recording from disk.
@@ -47,12 +57,19 @@ pub fn parse(source: &str, text: &str) -> Result<LeapRecording, InputError> {
     let json = if trimmed.starts_with('{') {
         trimmed.to_string()
     } else {
-        let units = lz_str::decompress_from_base64(trimmed)
-            .ok_or_else(|| err(source, None, "lz-string", "not valid LZ-String base64 data (corrupt or truncated)"))?;
-        String::from_utf16(&units).map_err(|_| err(source, None, "lz-string", "decompressed data is not valid text"))?
+        let units = lz_str::decompress_from_base64(trimmed).ok_or_else(|| {
+            err(source, None, "lz-string", "not valid LZ-String base64 data (corrupt or truncated)")
+        })?;
+        String::from_utf16(&units)
+            .map_err(|_| err(source, None, "lz-string", "decompressed data is not valid text"))?
     };
     let root: Value = serde_json::from_str(&json).map_err(|e| {
-        err(source, None, "json", format!("invalid JSON at line {} column {}: {e}", e.line(), e.column()))
+        err(
+            source,
+            None,
+            "json",
+            format!("invalid JSON at line {} column {}: {e}", e.line(), e.column()),
+        )
     })?;
     from_json(source, &root)
 }
@@ -69,18 +86,29 @@ pub fn from_json(source: &str, root: &Value) -> Result<LeapRecording, InputError
         .and_then(Value::as_array)
         .ok_or_else(|| err(source, None, "frames", "missing or not an array"))?;
     let frames = match version {
-        v if v == 0.1 || v == 1.0 => {
-            raw.iter().enumerate().map(|(i, f)| frame(source, i, f)).collect::<Result<Vec<_>, _>>()?
-        }
+        v if v == 0.1 || v == 1.0 => raw
+            .iter()
+            .enumerate()
+            .map(|(i, f)| frame(source, i, f))
+            .collect::<Result<Vec<_>, _>>()?,
         2.0 => {
-            let header = raw.first().ok_or_else(|| err(source, Some(0), "header", "format 2 needs a header frame"))?;
+            let header = raw
+                .first()
+                .ok_or_else(|| err(source, Some(0), "header", "format 2 needs a header frame"))?;
             raw.iter()
                 .enumerate()
                 .skip(1)
                 .map(|(i, f)| unpack(source, i, header, f).and_then(|obj| frame(source, i, &obj)))
                 .collect::<Result<Vec<_>, _>>()?
         }
-        v => return Err(err(source, None, "metadata.formatVersion", format!("unknown format version {v} (known: 0.1, 1, 2)"))),
+        v => {
+            return Err(err(
+                source,
+                None,
+                "metadata.formatVersion",
+                format!("unknown format version {v} (known: 0.1, 1, 2)"),
+            ));
+        }
     };
     if frames.is_empty() {
         return Err(err(source, None, "frames", "the recording has no frames"));
@@ -92,7 +120,13 @@ pub fn from_json(source: &str, root: &Value) -> Result<LeapRecording, InputError
 /// a format-1 frame would be. A header entry is a key, or `{name: [keys]}`
 /// for one nested object, or `{name: [[keys]]}` for a list of them.
 fn unpack(source: &str, index: usize, header: &Value, packed: &Value) -> Result<Value, InputError> {
-    fn object(source: &str, index: usize, path: &str, keys: &[Value], values: &Value) -> Result<Value, InputError> {
+    fn object(
+        source: &str,
+        index: usize,
+        path: &str,
+        keys: &[Value],
+        values: &Value,
+    ) -> Result<Value, InputError> {
         let values = values
             .as_array()
             .ok_or_else(|| err(source, Some(index), path, "packed value is not an array"))?;
@@ -101,7 +135,11 @@ fn unpack(source: &str, index: usize, header: &Value, packed: &Value) -> Result<
                 source,
                 Some(index),
                 path,
-                format!("packed array has {} values but the header has {} keys", values.len(), keys.len()),
+                format!(
+                    "packed array has {} values but the header has {} keys",
+                    values.len(),
+                    keys.len()
+                ),
             ));
         }
         let mut out = Map::new();
@@ -113,17 +151,32 @@ fn unpack(source: &str, index: usize, header: &Value, packed: &Value) -> Result<
                 Value::Object(spec) => {
                     for (name, sub) in spec {
                         let sub_path = format!("{path}.{name}");
-                        let sub = sub.as_array().ok_or_else(|| err(source, Some(0), &sub_path, "bad header"))?;
+                        let sub = sub
+                            .as_array()
+                            .ok_or_else(|| err(source, Some(0), &sub_path, "bad header"))?;
                         let unpacked = match sub.as_slice() {
                             [Value::Array(item_keys)] => {
-                                let items = value
-                                    .as_array()
-                                    .ok_or_else(|| err(source, Some(index), &sub_path, "packed list is not an array"))?;
+                                let items = value.as_array().ok_or_else(|| {
+                                    err(
+                                        source,
+                                        Some(index),
+                                        &sub_path,
+                                        "packed list is not an array",
+                                    )
+                                })?;
                                 Value::Array(
                                     items
                                         .iter()
                                         .enumerate()
-                                        .map(|(j, item)| object(source, index, &format!("{sub_path}[{j}]"), item_keys, item))
+                                        .map(|(j, item)| {
+                                            object(
+                                                source,
+                                                index,
+                                                &format!("{sub_path}[{j}]"),
+                                                item_keys,
+                                                item,
+                                            )
+                                        })
                                         .collect::<Result<_, _>>()?,
                                 )
                             }
@@ -132,18 +185,28 @@ fn unpack(source: &str, index: usize, header: &Value, packed: &Value) -> Result<
                         out.insert(name.clone(), unpacked);
                     }
                 }
-                _ => return Err(err(source, Some(0), path, "header entries must be keys or objects")),
+                _ => {
+                    return Err(err(
+                        source,
+                        Some(0),
+                        path,
+                        "header entries must be keys or objects",
+                    ));
+                }
             }
         }
         Ok(Value::Object(out))
     }
-    let keys = header.as_array().ok_or_else(|| err(source, Some(0), "header", "format 2 header is not an array"))?;
+    let keys = header
+        .as_array()
+        .ok_or_else(|| err(source, Some(0), "header", "format 2 header is not an array"))?;
     object(source, index, "frame", keys, packed)
 }
 
 fn number(source: &str, index: usize, path: &str, v: Option<&Value>) -> Result<f32, InputError> {
     let v = v.ok_or_else(|| err(source, Some(index), path, "missing"))?;
-    let x = v.as_f64().ok_or_else(|| err(source, Some(index), path, format!("not a number: {v}")))?;
+    let x =
+        v.as_f64().ok_or_else(|| err(source, Some(index), path, format!("not a number: {v}")))?;
     if !x.is_finite() || x.abs() > MAX_COORDINATE_MM as f64 {
         return Err(err(source, Some(index), path, format!("absurd value {x}")));
     }
@@ -152,9 +215,10 @@ fn number(source: &str, index: usize, path: &str, v: Option<&Value>) -> Result<f
 
 fn vec3(source: &str, index: usize, path: &str, v: Option<&Value>) -> Result<Vec3, InputError> {
     let v = v.ok_or_else(|| err(source, Some(index), path, "missing"))?;
-    let a = v.as_array().filter(|a| a.len() == 3).ok_or_else(|| {
-        err(source, Some(index), path, format!("not a 3-vector: {v}"))
-    })?;
+    let a = v
+        .as_array()
+        .filter(|a| a.len() == 3)
+        .ok_or_else(|| err(source, Some(index), path, format!("not a 3-vector: {v}")))?;
     let c = |i: usize| number(source, index, &format!("{path}[{i}]"), a.get(i));
     Ok(Vec3::new(c(0)?, c(1)?, c(2)?))
 }
@@ -177,7 +241,8 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
         .and_then(Value::as_i64)
         .ok_or_else(|| err(source, Some(index), "timestamp", "missing or not an integer (µs)"))?;
     let hands_json = f.get("hands").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);
-    let pointables = f.get("pointables").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);
+    let pointables =
+        f.get("pointables").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);
     let mut hands = Vec::with_capacity(hands_json.len());
     for (h, hand) in hands_json.iter().enumerate() {
         let path = |field: &str| format!("hands[{h}].{field}");
@@ -188,7 +253,14 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
         let side = match hand.get("type").and_then(Value::as_str) {
             Some("left") => Side::Left,
             Some("right") => Side::Right,
-            other => return Err(err(source, Some(index), path("type"), format!("expected \"left\" or \"right\", got {other:?}"))),
+            other => {
+                return Err(err(
+                    source,
+                    Some(index),
+                    path("type"),
+                    format!("expected \"left\" or \"right\", got {other:?}"),
+                ));
+            }
         };
         let mut joints = [[Vec3::ZERO; 4]; 5];
         let mut widths = DEFAULT_WIDTHS_MM;
@@ -209,14 +281,21 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
                     .get("id")
                     .and_then(Value::as_i64)
                     .map(|i| i.rem_euclid(10))
-                    .ok_or_else(|| err(source, Some(index), ppath("type"), "missing finger type and id"))?,
+                    .ok_or_else(|| {
+                        err(source, Some(index), ppath("type"), "missing finger type and id")
+                    })?,
             };
-            let f = usize::try_from(finger)
-                .ok()
-                .filter(|&f| f < 5)
-                .ok_or_else(|| err(source, Some(index), ppath("type"), format!("finger type {finger} is not 0..4")))?;
-            let tip_key = if pointable.get("btipPosition").is_some() { "btipPosition" } else { "tipPosition" };
-            for (j, key) in ["mcpPosition", "pipPosition", "dipPosition", tip_key].iter().enumerate() {
+            let f = usize::try_from(finger).ok().filter(|&f| f < 5).ok_or_else(|| {
+                err(source, Some(index), ppath("type"), format!("finger type {finger} is not 0..4"))
+            })?;
+            let tip_key = if pointable.get("btipPosition").is_some() {
+                "btipPosition"
+            } else {
+                "tipPosition"
+            };
+            for (j, key) in
+                ["mcpPosition", "pipPosition", "dipPosition", tip_key].iter().enumerate()
+            {
                 joints[f][j] = vec3(source, index, &ppath(key), pointable.get(*key))?;
             }
             if let (Some(carp), 1..) = (pointable.get("carpPosition"), f) {
@@ -225,14 +304,24 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             if let Some(w) = pointable.get("width") {
                 let w = number(source, index, &ppath("width"), Some(w))?;
                 if w <= 0.0 {
-                    return Err(err(source, Some(index), ppath("width"), format!("must be positive, got {w}")));
+                    return Err(err(
+                        source,
+                        Some(index),
+                        ppath("width"),
+                        format!("must be positive, got {w}"),
+                    ));
                 }
                 widths[f] = w;
             }
             seen[f] = true;
         }
         if let Some(missing) = seen.iter().position(|s| !s) {
-            return Err(err(source, Some(index), path("fingers"), format!("finger {missing} of hand {id} is missing")));
+            return Err(err(
+                source,
+                Some(index),
+                path("fingers"),
+                format!("finger {missing} of hand {id} is missing"),
+            ));
         }
         hands.push(TrackedHand {
             id,
@@ -242,7 +331,11 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             direction: unit(source, index, &path("direction"), hand.get("direction"))?,
             joints,
             // Only a complete set outlines the palm.
-            carps: carps.iter().copied().collect::<Option<Vec<Vec3>>>().and_then(|c| c.try_into().ok()),
+            carps: carps
+                .iter()
+                .copied()
+                .collect::<Option<Vec<Vec3>>>()
+                .and_then(|c| c.try_into().ok()),
             widths,
             grab: strength(hand.get("grabStrength")),
             pinch: strength(hand.get("pinchStrength")),
@@ -298,7 +391,12 @@ mod tests {
         let mut absurd = recording(1.0);
         absurd["frames"][0]["pointables"][2]["tipPosition"] = serde_json::json!([0.0, 1.0e12, 0.0]);
         let e = from_json("rec.json", &absurd).unwrap_err().to_string();
-        assert!(e.contains("frame 0") && e.contains("pointables[2].tipPosition[1]") && e.contains("absurd"), "{e}");
+        assert!(
+            e.contains("frame 0")
+                && e.contains("pointables[2].tipPosition[1]")
+                && e.contains("absurd"),
+            "{e}"
+        );
 
         let mut missing = recording(1.0);
         missing["frames"][0]["pointables"].as_array_mut().unwrap().remove(3);
@@ -306,7 +404,10 @@ mod tests {
         assert!(e.contains("hands[0].fingers") && e.contains("finger 3"), "{e}");
 
         let e = from_json("rec.json", &recording(3.0)).unwrap_err().to_string();
-        assert!(e.contains("metadata.formatVersion") && e.contains("unknown format version 3"), "{e}");
+        assert!(
+            e.contains("metadata.formatVersion") && e.contains("unknown format version 3"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -25,11 +25,14 @@ pub struct LiveLeap {
 impl LiveLeap {
     /// Connects and asks for frames even when the app is in the background.
     pub fn connect(url: &str) -> Result<LiveLeap, InputError> {
-        let fail = |reason: String| InputError { source_name: url.to_string(), frame: None, field: "connection".into(), reason };
+        let fail = |reason: String| InputError {
+            source_name: url.to_string(),
+            frame: None,
+            field: "connection".into(),
+            reason,
+        };
         let (mut socket, _) = tungstenite::connect(url).map_err(|e| fail(e.to_string()))?;
-        socket
-            .send(Message::text(r#"{"background": true}"#))
-            .map_err(|e| fail(e.to_string()))?;
+        socket.send(Message::text(r#"{"background": true}"#)).map_err(|e| fail(e.to_string()))?;
         Ok(LiveLeap { url: url.to_string(), socket, frames: 0, skipped: 0, last_error: None })
     }
 
@@ -40,7 +43,9 @@ impl LiveLeap {
         loop {
             let message = match self.socket.read() {
                 Ok(m) => m,
-                Err(tungstenite::Error::ConnectionClosed | tungstenite::Error::AlreadyClosed) => return Ok(None),
+                Err(tungstenite::Error::ConnectionClosed | tungstenite::Error::AlreadyClosed) => {
+                    return Ok(None);
+                }
                 Err(e) => {
                     return Err(InputError {
                         source_name: self.url.clone(),
@@ -68,7 +73,9 @@ impl LiveLeap {
                     reason: e.to_string(),
                 })
                 .and_then(|v| {
-                    if v.get("timestamp").is_none() && (v.get("version").is_some() || v.get("event").is_some()) {
+                    if v.get("timestamp").is_none()
+                        && (v.get("version").is_some() || v.get("event").is_some())
+                    {
                         Ok(None)
                     } else {
                         leap::frame(&self.url, index, &v).map(Some)

@@ -7,7 +7,9 @@
 //! Changes made directly through `physics_mut()` are not recorded.
 
 use crate::hand::HandId;
-use crate::pipeline::{Call, InteractionConfig, InteractionWorld, ObjectState, Recorder, WorldError};
+use crate::pipeline::{
+    Call, InteractionConfig, InteractionWorld, ObjectState, Recorder, WorldError,
+};
 use crate::scene::ObjectId;
 use std::path::Path;
 
@@ -89,7 +91,9 @@ impl Session {
                 Call::AddStatic(s) => world.add_static(s).map(drop).map_err(fail)?,
                 Call::AddObject(o) => world.add_object(o).map(drop).map_err(fail)?,
                 Call::AddHand(side) => drop(world.add_hand(*side)),
-                Call::SetHandPose(h, pose) => world.set_hand_pose(HandId(*h), pose).map_err(fail)?,
+                Call::SetHandPose(h, pose) => {
+                    world.set_hand_pose(HandId(*h), pose).map_err(fail)?
+                }
                 Call::ClearHandPose(h) => world.clear_hand_pose(HandId(*h)).map_err(fail)?,
                 Call::SetObjectLocked(o, locked) => {
                     world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?
@@ -106,16 +110,14 @@ impl Session {
 
     /// Writes the session as JSON.
     pub fn save(&self, path: &Path) -> Result<(), SessionError> {
-        let fail =
-            |reason: String| SessionError::File { path: path.display().to_string(), reason };
+        let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = serde_json::to_string(self).map_err(|e| fail(e.to_string()))?;
         std::fs::write(path, text).map_err(|e| fail(e.to_string()))
     }
 
     /// Reads a session file written by [`Self::save`].
     pub fn load(path: &Path) -> Result<Session, SessionError> {
-        let fail =
-            |reason: String| SessionError::File { path: path.display().to_string(), reason };
+        let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
         let session: Session = serde_json::from_str(&text)
             .map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;

@@ -43,7 +43,8 @@ impl InteractionWorld {
             let o = c.contact.object.0 as usize;
             let slot = &self.objects[o];
             let body = &self.physics.bodies[slot.body];
-            let inv_inertia = body.mass_properties().local_mprops.inv_principal_inertia.max_element();
+            let inv_inertia =
+                body.mass_properties().local_mprops.inv_principal_inertia.max_element();
             let r = c.contact.point - body.center_of_mass();
             let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
             step.limits[o].stiffness += slot.gamma * w;

@@ -10,11 +10,10 @@ use crate::hand::{HandId, HandPose, PoseError, Side};
 use crate::scene::{GammaMode, Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
-use std::any::Any;
 use rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
-    RigidBodyType,
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
 };
+use std::any::Any;
 
 /// Errors of [`InteractionWorld`] calls.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

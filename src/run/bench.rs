@@ -30,9 +30,15 @@ pub fn held_boxes_scene(
     let half = 0.015;
     let squeeze = 0.002;
     let radius = 0.008;
-    let centre = |k: usize| Vec3::new(0.2 + 0.08 * (k % 4) as f32, 0.3 + 0.08 * (k / 4) as f32, 0.0);
+    let centre =
+        |k: usize| Vec3::new(0.2 + 0.08 * (k % 4) as f32, 0.3 + 0.08 * (k / 4) as f32, 0.0);
     for k in 0..boxes {
-        world.add_object(&ObjectDesc::cuboid(&format!("box{k}"), Vec3::splat(2.0 * half), 0.02, centre(k)))?;
+        world.add_object(&ObjectDesc::cuboid(
+            &format!("box{k}"),
+            Vec3::splat(2.0 * half),
+            0.02,
+            centre(k),
+        ))?;
     }
     let mut hands = [HandId(0); 2];
     for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {

@@ -24,7 +24,11 @@ pub fn claw_grasp(h: f32, closure: f32, squeeze: f32) -> HandPose {
         Vec3::X,
         Vec3::new(0.045, 0.01, 0.04),
     )
-    .unwrap_or(Palm { center: Vec3::new(0.0, h + 0.025, 0.0), rotation: Quat::IDENTITY, half_extents: Vec3::new(0.045, 0.01, 0.04) });
+    .unwrap_or(Palm {
+        center: Vec3::new(0.0, h + 0.025, 0.0),
+        rotation: Quat::IDENTITY,
+        half_extents: Vec3::new(0.045, 0.01, 0.04),
+    });
     let radii = [0.0095, 0.0085, 0.0085, 0.008, 0.007];
     let finger_z = [0.0, -0.0225, -0.0075, 0.0075, 0.0225];
     let joints = std::array::from_fn(|f| {
@@ -106,7 +110,12 @@ impl GraspLiftCarry {
         let half = 0.025;
         let mut world = InteractionWorld::new(config)?;
         world.add_static(&StaticDesc::ground(-half, 0.5))?;
-        let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * half), 0.05, Vec3::ZERO))?;
+        let cube = world.add_object(&ObjectDesc::cuboid(
+            "cube",
+            Vec3::splat(2.0 * half),
+            0.05,
+            Vec3::ZERO,
+        ))?;
         let hand = world.add_hand(Side::Right);
         Ok(GraspLiftCarry { world, hand, cube, half })
     }

@@ -237,8 +237,12 @@ impl<'w, 's> Driver<'w, 's> {
             }
             self.world.step();
             self.steps += 1;
-            let view =
-                StepView { world: self.world, index: i, t: self.clock(self.steps), hands: &self.frames };
+            let view = StepView {
+                world: self.world,
+                index: i,
+                t: self.clock(self.steps),
+                hands: &self.frames,
+            };
             for o in observers.iter_mut() {
                 o.after_step(&view)?;
             }

@@ -48,7 +48,11 @@ fn grasp_point(hand: &HandSample, tip: &[Vec3; 5], aperture: f32, finger_width: 
         let middles = (1..5).map(|f| pose.fingers[f][1].centroid()).sum::<Vec3>() / 4.0;
         return 0.5 * (face + middles);
     }
-    let converged: Vec<Vec3> = tip[1..].iter().copied().filter(|t| t.distance(tip[0]) <= aperture + finger_width).collect();
+    let converged: Vec<Vec3> = tip[1..]
+        .iter()
+        .copied()
+        .filter(|t| t.distance(tip[0]) <= aperture + finger_width)
+        .collect();
     let fingers = converged.iter().copied().sum::<Vec3>() / converged.len().max(1) as f32;
     0.5 * (tip[0] + fingers)
 }

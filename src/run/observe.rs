@@ -109,7 +109,8 @@ impl Observer for Summary {
         for (max, id) in self.max_speed.iter_mut().zip(world.object_ids()) {
             let s = world.object_state(id)?;
             *max = max.max(s.linvel.length());
-            self.all_finite &= s.position.is_finite() && s.rotation.is_finite() && s.linvel.is_finite();
+            self.all_finite &=
+                s.position.is_finite() && s.rotation.is_finite() && s.linvel.is_finite();
         }
         Ok(())
     }

@@ -34,7 +34,10 @@ pub struct ReplaySummary {
 
 /// A world to replay into, with a ground at y = 0, recording its session
 /// if `record` ([`Session::take`] gets it).
-pub fn replay_world(config: InteractionConfig, record: bool) -> Result<InteractionWorld, WorldError> {
+pub fn replay_world(
+    config: InteractionConfig,
+    record: bool,
+) -> Result<InteractionWorld, WorldError> {
     let mut world = InteractionWorld::new(config)?;
     if record {
         Session::start(&mut world);
@@ -128,7 +131,8 @@ pub fn place_at_grasp(
     index: usize,
 ) -> Result<(Fixture, GraspSite), RunError> {
     let grasps = find_grasps(playback, 0.005);
-    let site = *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
+    let site =
+        *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
     let half = 0.5 * object.size;
     let shape = if object.sphere {
         ShapeDesc::Sphere { radius: half }

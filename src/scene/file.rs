@@ -121,7 +121,11 @@ impl Scene {
 
     /// Checks a parsed scene and loads its mesh files (`file` names it in
     /// errors; mesh paths are relative to `dir`).
-    pub(crate) fn from_entry(file: &str, mut entry: SceneEntry, dir: &Path) -> Result<Scene, SceneError> {
+    pub(crate) fn from_entry(
+        file: &str,
+        mut entry: SceneEntry,
+        dir: &Path,
+    ) -> Result<Scene, SceneError> {
         let fail = |reason: String| SceneError::new(file, reason);
         let shapes = entry.objects.iter_mut().map(|o| (o.name.clone(), &mut o.shape));
         let static_shapes = entry.statics.iter_mut().map(|s| (s.name.clone(), &mut s.shape));
@@ -158,7 +162,13 @@ impl Scene {
                 })
             })
             .collect::<Result<Vec<_>, SceneError>>()?;
-        let scene = Scene { ground: entry.ground, gravity: entry.gravity, statics: entry.statics, objects, towers: entry.towers };
+        let scene = Scene {
+            ground: entry.ground,
+            gravity: entry.gravity,
+            statics: entry.statics,
+            objects,
+            towers: entry.towers,
+        };
         if let Some(g) = scene.ground {
             StaticDesc::ground(g.height, g.friction).validate().map_err(|e| fail(e.to_string()))?;
         }
@@ -205,7 +215,8 @@ mod tests {
 
     #[test]
     fn errors_name_the_file_and_the_problem() {
-        let unknown = Scene::parse("s.json", r#"{"objects": [], "lights": []}"#).unwrap_err().to_string();
+        let unknown =
+            Scene::parse("s.json", r#"{"objects": [], "lights": []}"#).unwrap_err().to_string();
         assert!(unknown.starts_with("s.json: line 1") && unknown.contains("lights"), "{unknown}");
         let bad_mass = Scene::parse(
             "s.json",
@@ -214,7 +225,10 @@ mod tests {
         )
         .unwrap_err()
         .to_string();
-        assert!(bad_mass.contains("s.json") && bad_mass.contains("'cube'") && bad_mass.contains("mass"), "{bad_mass}");
+        assert!(
+            bad_mass.contains("s.json") && bad_mass.contains("'cube'") && bad_mass.contains("mass"),
+            "{bad_mass}"
+        );
         let material = Scene::parse(
             "s.json",
             r#"{"objects": [{"name": "cube", "shape": {"Sphere": {"radius": 0.02}}, "mass": 1,
@@ -241,11 +255,22 @@ mod tests {
         let ok = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.003}}"#).unwrap();
         let ShapeDesc::Mesh(m) = &ok.objects[0].shape else { panic!() };
         assert!(m.mesh.triangles.len() > 100);
-        let missing = scene("../assets/meshes/rook.obj", r#"{"Voxels": {"size": 0.003}}"#).unwrap_err().to_string();
-        assert!(missing.starts_with("s.json: object 'pawn': shape.Mesh.file: ") && missing.contains("rook.obj"), "{missing}");
-        let tiny = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.00001}}"#).unwrap_err().to_string();
+        let missing = scene("../assets/meshes/rook.obj", r#"{"Voxels": {"size": 0.003}}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            missing.starts_with("s.json: object 'pawn': shape.Mesh.file: ")
+                && missing.contains("rook.obj"),
+            "{missing}"
+        );
+        let tiny = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.00001}}"#)
+            .unwrap_err()
+            .to_string();
         assert!(tiny.contains("'pawn'") && tiny.contains("Voxels.size"), "{tiny}");
-        let unknown = scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.003, "fill": 1}}"#).unwrap_err().to_string();
+        let unknown =
+            scene("../assets/meshes/pawn.obj", r#"{"Voxels": {"size": 0.003, "fill": 1}}"#)
+                .unwrap_err()
+                .to_string();
         assert!(unknown.contains("line") && unknown.contains("fill"), "{unknown}");
     }
 }

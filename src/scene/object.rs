@@ -20,12 +20,22 @@ impl std::fmt::Display for ObjectId {
 #[serde(deny_unknown_fields)]
 pub enum ShapeDesc {
     /// A box with the given half extents.
-    Box { half_extents: Vec3 },
-    Sphere { radius: f32 },
+    Box {
+        half_extents: Vec3,
+    },
+    Sphere {
+        radius: f32,
+    },
     /// A capsule along local y.
-    Capsule { half_height: f32, radius: f32 },
+    Capsule {
+        half_height: f32,
+        radius: f32,
+    },
     /// A cylinder along local y.
-    Cylinder { half_height: f32, radius: f32 },
+    Cylinder {
+        half_height: f32,
+        radius: f32,
+    },
     /// Several convex parts rigidly joined, e.g. an axe's handle and head.
     Compound(Vec<Part>),
     /// A triangle mesh from a file (§3.7), made into a body as `body` says.
@@ -87,20 +97,41 @@ impl MeshShape {
         Ok(match self.body {
             MeshBody::Voxels { size } => {
                 positive(object, &f("body.Voxels.size"), size)?;
-                let boxes = mesh.voxel_boxes(size, MAX_VOXEL_BOXES).map_err(|e| ObjectError::new(object, f("body.Voxels.size"), e.to_string()))?;
+                let boxes = mesh
+                    .voxel_boxes(size, MAX_VOXEL_BOXES)
+                    .map_err(|e| ObjectError::new(object, f("body.Voxels.size"), e.to_string()))?;
                 SharedShape::compound(
-                    boxes.into_iter().map(|(c, h)| (Pose::from_translation(c), SharedShape::cuboid(h.x, h.y, h.z))).collect(),
+                    boxes
+                        .into_iter()
+                        .map(|(c, h)| {
+                            (Pose::from_translation(c), SharedShape::cuboid(h.x, h.y, h.z))
+                        })
+                        .collect(),
                 )
             }
             MeshBody::ConvexParts { concavity } => {
                 if !(concavity.is_finite() && concavity > 0.0 && concavity <= 1.0) {
-                    return Err(ObjectError::new(object, f("body.ConvexParts.concavity"), format!("must be in (0, 1], got {concavity}")));
+                    return Err(ObjectError::new(
+                        object,
+                        f("body.ConvexParts.concavity"),
+                        format!("must be in (0, 1], got {concavity}"),
+                    ));
                 }
-                let params = rapier3d::parry::transformation::vhacd::VHACDParameters { concavity, ..Default::default() };
-                SharedShape::convex_decomposition_with_params(&mesh.vertices, &mesh.triangles, &params)
+                let params = rapier3d::parry::transformation::vhacd::VHACDParameters {
+                    concavity,
+                    ..Default::default()
+                };
+                SharedShape::convex_decomposition_with_params(
+                    &mesh.vertices,
+                    &mesh.triangles,
+                    &params,
+                )
             }
-            MeshBody::TriMesh => SharedShape::trimesh(mesh.vertices, mesh.triangles)
-                .map_err(|e| ObjectError::new(object, f("file"), format!("not a usable triangle mesh: {e}")))?,
+            MeshBody::TriMesh => {
+                SharedShape::trimesh(mesh.vertices, mesh.triangles).map_err(|e| {
+                    ObjectError::new(object, f("file"), format!("not a usable triangle mesh: {e}"))
+                })?
+            }
         })
     }
 }
@@ -199,7 +230,11 @@ fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
     if v.is_finite() && v.abs().max_element() <= crate::hand::MAX_COORDINATE {
         Ok(())
     } else {
-        Err(ObjectError::new(object, field, format!("must be finite and within ±{} m, got {v:?}", crate::hand::MAX_COORDINATE)))
+        Err(ObjectError::new(
+            object,
+            field,
+            format!("must be finite and within ±{} m, got {v:?}", crate::hand::MAX_COORDINATE),
+        ))
     }
 }
 
@@ -238,13 +273,21 @@ impl ShapeDesc {
             }
             ShapeDesc::Compound(parts) => {
                 if parts.is_empty() {
-                    return Err(ObjectError::new(object, field, "a compound needs at least one part"));
+                    return Err(ObjectError::new(
+                        object,
+                        field,
+                        "a compound needs at least one part",
+                    ));
                 }
                 let mut built = Vec::with_capacity(parts.len());
                 for (i, part) in parts.iter().enumerate() {
                     let f = format!("{field}.parts[{i}]");
                     if matches!(part.shape, ShapeDesc::Compound(_) | ShapeDesc::Mesh(_)) {
-                        return Err(ObjectError::new(object, &f, "a compound's parts are primitives, not compounds or meshes"));
+                        return Err(ObjectError::new(
+                            object,
+                            &f,
+                            "a compound's parts are primitives, not compounds or meshes",
+                        ));
                     }
                     finite_vec(object, &format!("{f}.position"), part.position)?;
                     unit_quat(object, &format!("{f}.rotation"), part.rotation)?;
@@ -265,7 +308,11 @@ impl ObjectDesc {
         finite_vec(name, "position", self.position)?;
         unit_quat(name, "rotation", self.rotation)?;
         if let Err(field) = self.material.validate() {
-            return Err(ObjectError::new(name, format!("material.{field}"), "must be finite and ≥ 0"));
+            return Err(ObjectError::new(
+                name,
+                format!("material.{field}"),
+                "must be finite and ≥ 0",
+            ));
         }
         if let Some(GammaMode::Fixed(g)) = self.gamma {
             positive(name, "gamma", g)?;
@@ -310,7 +357,11 @@ impl StaticDesc {
         finite_vec(name, "position", self.position)?;
         unit_quat(name, "rotation", self.rotation)?;
         if !(self.friction.is_finite() && self.friction >= 0.0) {
-            return Err(ObjectError::new(name, "friction", format!("must be finite and ≥ 0, got {}", self.friction)));
+            return Err(ObjectError::new(
+                name,
+                "friction",
+                format!("must be finite and ≥ 0, got {}", self.friction),
+            ));
         }
         self.shape.build(name, "shape")
     }

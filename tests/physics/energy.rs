@@ -21,7 +21,11 @@ fn spin_under_a_still_finger(static_mu: f32, dynamic_mu: f32, spin: f32) -> (f32
     let hand = world.add_hand(Side::Right);
     let mut pose = parked_hand(Side::Right);
     let (r, y) = (0.008, 2.0 * half.y + 0.008 - 0.0025);
-    set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(0.0, y, -0.01), b: Vec3::new(0.0, y, 0.01), radius: r });
+    set_bone(
+        &mut pose,
+        INDEX_DISTAL,
+        Capsule { a: Vec3::new(0.0, y, -0.01), b: Vec3::new(0.0, y, 0.01), radius: r },
+    );
     run(&mut world, hand, 0.3, |_| pose.clone(), |_, _| {});
     let body = world.object_body(id).unwrap();
     world.physics_mut().bodies[body].set_angvel(Vec3::new(0.0, spin, 0.0), true);
@@ -29,10 +33,17 @@ fn spin_under_a_still_finger(static_mu: f32, dynamic_mu: f32, spin: f32) -> (f32
     let kicked = energy(&world);
     let start = world.object_state(id).unwrap().rotation;
     let (mut most, mut turned) = (0.0f32, 0.0f32);
-    run(&mut world, hand, 1.5, |_| pose.clone(), |w, _| {
-        most = most.max(energy(w));
-        turned = turned.max(start.angle_between(w.object_state(id).unwrap().rotation).to_degrees());
-    });
+    run(
+        &mut world,
+        hand,
+        1.5,
+        |_| pose.clone(),
+        |w, _| {
+            most = most.max(energy(w));
+            turned =
+                turned.max(start.angle_between(w.object_state(id).unwrap().rotation).to_degrees());
+        },
+    );
     (kicked, most, turned)
 }
 
@@ -49,7 +60,10 @@ fn a_still_finger_only_takes_energy_out_of_a_box_spinning_under_it() {
             if spin == 4.0 {
                 // The patch holds a twist of μ_st·f_n/γ at its 4 mm radius,
                 // 14–17° here: turning farther means its samples slipped.
-                assert!(turned > 20.0, "μ {static_mu}/{dynamic_mu}: the box only turned {turned:.1}°, so nothing slipped");
+                assert!(
+                    turned > 20.0,
+                    "μ {static_mu}/{dynamic_mu}: the box only turned {turned:.1}°, so nothing slipped"
+                );
             }
         }
     }

@@ -12,7 +12,11 @@ fn cube_follows_the_hand_through_lift_and_turn_then_falls_when_opened() {
     // Its pose in the hand frame barely changes while carried and turned 90°.
     assert!(report.max_drift < 0.005, "drifted {:.1} mm in the hand", report.max_drift * 1e3);
     assert!(report.max_drift_deg < 5.0, "turned {:.1}° in the hand", report.max_drift_deg);
-    assert!(report.contacts_held >= 5, "only {} contacts at the end of the carry", report.contacts_held);
+    assert!(
+        report.contacts_held >= 5,
+        "only {} contacts at the end of the carry",
+        report.contacts_held
+    );
     // Opening the hand drops it back to the ground (its centre rests at 0).
     assert!(report.final_height < 0.01, "still at {:.3} m after opening", report.final_height);
     assert_eq!(report.contacts_after_release, 0);
@@ -42,7 +46,9 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
     Session::start(&mut world);
     world.add_static(&StaticDesc::ground(-script.half, 0.5)).unwrap();
-    let cube = world.add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * script.half), 0.05, Vec3::ZERO)).unwrap();
+    let cube = world
+        .add_object(&ObjectDesc::cuboid("cube", Vec3::splat(2.0 * script.half), 0.05, Vec3::ZERO))
+        .unwrap();
     let hand = world.add_hand(Side::Right);
     world.set_object_locked(cube, true).unwrap();
     let dt = world.config().dt;
@@ -56,11 +62,15 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
         world.step();
         live.push(object_states(&world));
     }
-    assert!(world.object_state(cube).unwrap().position.y > 0.15, "the recorded run lifted the cube");
+    assert!(
+        world.object_state(cube).unwrap().position.y > 0.15,
+        "the recorded run lifted the cube"
+    );
     let session = Session::take(&mut world).unwrap();
     assert_eq!(session.steps(), live.len());
 
-    let path = std::env::temp_dir().join(format!("coulomb-hands-session-{}.json", std::process::id()));
+    let path =
+        std::env::temp_dir().join(format!("coulomb-hands-session-{}.json", std::process::id()));
     session.save(&path).unwrap();
     let loaded = Session::load(&path).unwrap();
     std::fs::remove_file(&path).ok();
@@ -70,7 +80,11 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     loaded.replay(|w| replayed.push(object_states(w))).unwrap();
     assert_eq!(replayed.len(), live.len());
     let bits = |s: &coulomb_hands::ObjectState| {
-        (s.position.to_array().map(f32::to_bits), s.rotation.to_array().map(f32::to_bits), s.linvel.to_array().map(f32::to_bits))
+        (
+            s.position.to_array().map(f32::to_bits),
+            s.rotation.to_array().map(f32::to_bits),
+            s.linvel.to_array().map(f32::to_bits),
+        )
     };
     for (step, (a, b)) in live.iter().zip(&replayed).enumerate() {
         for (x, y) in a.iter().zip(b) {

@@ -1,7 +1,9 @@
 //! When contacts begin and end, and what they do in between.
 
 use super::*;
-use coulomb_hands::{ContactEventKind, Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx, StaticDesc};
+use coulomb_hands::{
+    ContactEventKind, Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx, StaticDesc,
+};
 
 const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
 
@@ -10,7 +12,11 @@ const INDEX_DISTAL: Bone = Bone::Finger(Finger::Index, Phalanx::Distal);
 fn finger_above(gap: f32) -> HandPose {
     let mut pose = parked_hand(Side::Right);
     let y = 0.05 + 0.008 + gap;
-    set_bone(&mut pose, INDEX_DISTAL, Capsule { a: Vec3::new(0.0, y, -0.01), b: Vec3::new(0.0, y, 0.01), radius: 0.008 });
+    set_bone(
+        &mut pose,
+        INDEX_DISTAL,
+        Capsule { a: Vec3::new(0.0, y, -0.01), b: Vec3::new(0.0, y, 0.01), radius: 0.008 },
+    );
     pose
 }
 
@@ -19,11 +25,19 @@ fn a_contact_begins_within_the_offset_pushes_only_when_pressing_and_ends_beyond_
     let config = InteractionConfig::default();
     let mut world = InteractionWorld::new(config).unwrap();
     world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    let id = world
+        .add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0)))
+        .unwrap();
     let hand = world.add_hand(Side::Right);
     // Down from 2 cm above to 2 mm inside over 1 s, hold, back up to 2 cm.
     let gap = |t: f32| {
-        if t < 1.0 { 0.02 - 0.022 * t } else if t < 1.5 { -0.002 } else { -0.002 + 0.022 * (t - 1.5) }
+        if t < 1.0 {
+            0.02 - 0.022 * t
+        } else if t < 1.5 {
+            -0.002
+        } else {
+            -0.002 + 0.022 * (t - 1.5)
+        }
     };
     // The real gap: the box settles a little into the ground.
     let real_gap = |w: &InteractionWorld, t: f32| {
@@ -34,28 +48,40 @@ fn a_contact_begins_within_the_offset_pushes_only_when_pressing_and_ends_beyond_
     let mut ended_at = None;
     let mut pushed_while_hovering = false;
     let mut pressed = false;
-    run(&mut world, hand, 2.6, |t| finger_above(gap(t)), |w, t| {
-        let g = real_gap(w, t - config.dt);
-        for e in w.events() {
-            assert_eq!((e.hand, e.bone, e.object), (hand, INDEX_DISTAL, id));
-            match e.kind {
-                ContactEventKind::Began => began_at = began_at.or(Some(g)),
-                ContactEventKind::Ended => ended_at = ended_at.or(Some(g)),
+    run(
+        &mut world,
+        hand,
+        2.6,
+        |t| finger_above(gap(t)),
+        |w, t| {
+            let g = real_gap(w, t - config.dt);
+            for e in w.events() {
+                assert_eq!((e.hand, e.bone, e.object), (hand, INDEX_DISTAL, id));
+                match e.kind {
+                    ContactEventKind::Began => began_at = began_at.or(Some(g)),
+                    ContactEventKind::Ended => ended_at = ended_at.or(Some(g)),
+                }
             }
-        }
-        for c in w.contacts() {
-            if g > 0.0005 && c.force.length() > 0.0 {
-                pushed_while_hovering = true;
+            for c in w.contacts() {
+                if g > 0.0005 && c.force.length() > 0.0 {
+                    pushed_while_hovering = true;
+                }
+                if g < -0.001 && c.state == FrictionState::Static && c.normal_force > 0.5 {
+                    pressed = true;
+                }
             }
-            if g < -0.001 && c.state == FrictionState::Static && c.normal_force > 0.5 {
-                pressed = true;
-            }
-        }
-    });
+        },
+    );
     let began = began_at.expect("a contact began");
     let ended = ended_at.expect("the contact ended");
-    assert!(began <= config.contact_offset && began > config.contact_offset - 0.001, "began at gap {began}");
-    assert!(ended > config.release_offset && ended < config.release_offset + 0.001, "ended at gap {ended}");
+    assert!(
+        began <= config.contact_offset && began > config.contact_offset - 0.001,
+        "began at gap {began}"
+    );
+    assert!(
+        ended > config.release_offset && ended < config.release_offset + 0.001,
+        "ended at gap {ended}"
+    );
     assert!(!pushed_while_hovering, "a hovering bone must not push");
     assert!(pressed, "pressing 2 mm in pushes with ≈ γ·2 mm = 0.8 N and sticks");
 }
@@ -64,7 +90,9 @@ fn a_contact_begins_within_the_offset_pushes_only_when_pressing_and_ends_beyond_
 fn losing_tracking_releases_the_hands_contacts() {
     let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
     world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-    world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    world
+        .add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0)))
+        .unwrap();
     let hand = world.add_hand(Side::Right);
     run(&mut world, hand, 0.2, |_| finger_above(-0.002), |_, _| {});
     assert_eq!(world.contacts().len(), 1);
@@ -82,21 +110,29 @@ fn a_fast_bone_pushes_nothing_before_it_touches() {
     // Coming down at 1 m/s from 2 cm above: the damper must not push early.
     let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
     world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))).unwrap();
+    let id = world
+        .add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0)))
+        .unwrap();
     let hand = world.add_hand(Side::Right);
     let gap = |t: f32| 0.02 - 1.0 * t;
     let mut early = Vec::new();
     let mut touched = false;
-    run(&mut world, hand, 0.03, |t| finger_above(gap(t)), |w, t| {
-        let top = w.object_state(id).unwrap().position.y + 0.025;
-        let real_gap = 0.05 + gap(t - w.config().dt) - top;
-        for c in w.contacts() {
-            if real_gap > 0.0 && c.force.length() > 0.0 {
-                early.push((real_gap, c.force.length()));
+    run(
+        &mut world,
+        hand,
+        0.03,
+        |t| finger_above(gap(t)),
+        |w, t| {
+            let top = w.object_state(id).unwrap().position.y + 0.025;
+            let real_gap = 0.05 + gap(t - w.config().dt) - top;
+            for c in w.contacts() {
+                if real_gap > 0.0 && c.force.length() > 0.0 {
+                    early.push((real_gap, c.force.length()));
+                }
+                touched |= c.normal_force > 0.0;
             }
-            touched |= c.normal_force > 0.0;
-        }
-    });
+        },
+    );
     assert!(early.is_empty(), "pushed before touching: (gap m, force N) {early:?}");
     assert!(touched, "it did press once through the surface");
 }
@@ -106,7 +142,9 @@ fn removing_a_support_drops_what_rested_on_it() {
     let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
     let shelf = world.add_static(&StaticDesc::ground(0.3, 0.5)).unwrap();
     world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-    let id = world.add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.325, 0.0))).unwrap();
+    let id = world
+        .add_object(&ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.325, 0.0)))
+        .unwrap();
     for _ in 0..200 {
         world.step();
     }
@@ -120,7 +158,11 @@ fn removing_a_support_drops_what_rested_on_it() {
     for _ in 0..1000 {
         world.step();
     }
-    assert!((position(&world, id).y - 0.025).abs() < 0.002, "fell to the floor: {}", position(&world, id).y);
+    assert!(
+        (position(&world, id).y - 0.025).abs() < 0.002,
+        "fell to the floor: {}",
+        position(&world, id).y
+    );
 }
 
 #[test]
@@ -135,7 +177,8 @@ fn a_released_fixture_with_reseated_contacts_is_not_dragged_by_the_sweep_behind_
     let lateral_drift = |reseat: bool| {
         let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
         let mut world = InteractionWorld::new(config).unwrap();
-        let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0)).with_material(test_material(0.5));
+        let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.1, Vec3::new(0.0, 0.025, 0.0))
+            .with_material(test_material(0.5));
         let id = world.add_object(&desc).unwrap();
         world.set_object_locked(id, true).unwrap();
         let hand = world.add_hand(Side::Right);
@@ -155,14 +198,32 @@ fn a_released_fixture_with_reseated_contacts_is_not_dragged_by_the_sweep_behind_
         }
         let x0 = position(&world, id).x;
         let mut events = Vec::new();
-        run(&mut world, hand, 0.3, |_| at(0.0), |w, _| events.extend(w.events().iter().map(|e| e.kind)));
+        run(
+            &mut world,
+            hand,
+            0.3,
+            |_| at(0.0),
+            |w, _| events.extend(w.events().iter().map(|e| e.kind)),
+        );
         if reseat {
-            assert_eq!(&events[..2], &[ContactEventKind::Ended, ContactEventKind::Began], "re-seated at once");
+            assert_eq!(
+                &events[..2],
+                &[ContactEventKind::Ended, ContactEventKind::Began],
+                "re-seated at once"
+            );
         }
         position(&world, id).x - x0
     };
     let kept = lateral_drift(false);
     let reseated = lateral_drift(true);
-    assert!(kept > 0.001, "the kept kinetic stretch drags the box {:.2} mm along the sweep", kept * 1e3);
-    assert!(reseated.abs() < 0.0003, "re-seated, only the normal push remains: {:.3} mm sideways", reseated * 1e3);
+    assert!(
+        kept > 0.001,
+        "the kept kinetic stretch drags the box {:.2} mm along the sweep",
+        kept * 1e3
+    );
+    assert!(
+        reseated.abs() < 0.0003,
+        "re-seated, only the normal push remains: {:.3} mm sideways",
+        reseated * 1e3
+    );
 }

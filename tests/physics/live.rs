@@ -12,7 +12,8 @@ fn streams_a_recording_over_a_local_websocket_and_skips_malformed_frames() {
     let text = std::fs::read_to_string(&path).unwrap();
     let json = String::from_utf16(&lz_str::decompress_from_base64(text.trim()).unwrap()).unwrap();
     let root: serde_json::Value = serde_json::from_str(&json).unwrap();
-    let frames: Vec<String> = root["frames"].as_array().unwrap()[..100].iter().map(|f| f.to_string()).collect();
+    let frames: Vec<String> =
+        root["frames"].as_array().unwrap()[..100].iter().map(|f| f.to_string()).collect();
     let mut broken = root["frames"][100].clone();
     broken["hands"][0].as_object_mut().unwrap().remove("palmPosition");
 
@@ -45,7 +46,9 @@ fn streams_a_recording_over_a_local_websocket_and_skips_malformed_frames() {
         }
         done.send((live, received)).ok();
     });
-    let (live, received) = result.recv_timeout(std::time::Duration::from_secs(60)).expect("the stream finished within 60 s");
+    let (live, received) = result
+        .recv_timeout(std::time::Duration::from_secs(60))
+        .expect("the stream finished within 60 s");
     server.join().unwrap();
     assert_eq!(live.frames, 100);
     assert_eq!(live.skipped, 2, "the bad JSON and the frame without a palm");

@@ -4,13 +4,13 @@
 mod energy;
 mod grasp;
 mod lifecycle;
-mod meshes;
 mod live;
+mod meshes;
 mod pinch;
 mod push;
 mod recordings;
-mod scenarios;
 mod safety;
+mod scenarios;
 mod tilt;
 
 use coulomb_hands::hand::rig::HandRig;

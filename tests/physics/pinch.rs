@@ -32,7 +32,8 @@ fn pinch_with(config: InteractionConfig, depth: f32, material: Material) -> Pinc
     for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {
         let s = if i == 0 { -1.0 } else { 1.0 };
         let x = s * (HALF + RADIUS - depth);
-        let capsule = Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
+        let capsule =
+            Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
         set_bone(&mut poses[i], INDEX_DISTAL, capsule);
         hands[i] = world.add_hand(side);
     }
@@ -82,7 +83,11 @@ fn holds_with_a_25_percent_margin_over_coulombs_threshold() {
     // A static contact's C is fixed on the box: record it in the box frame.
     let in_box = |p: &Pinch| {
         let s = p.world.object_state(p.box_id).unwrap();
-        p.world.contacts().iter().map(|c| s.rotation.inverse() * (c.point - s.position)).collect::<Vec<_>>()
+        p.world
+            .contacts()
+            .iter()
+            .map(|c| s.rotation.inverse() * (c.point - s.position))
+            .collect::<Vec<_>>()
     };
     let anchored = in_box(&p);
     let drop = p.hold(2.0);
@@ -98,7 +103,11 @@ fn holds_with_a_25_percent_margin_over_coulombs_threshold() {
         assert_eq!(c.state, FrictionState::Static);
         assert_eq!(c.stiffness, 400.0, "the stability limit must not soften this pinch");
         let expected = 1.25 * MASS * 9.81 / (2.0 * 0.5);
-        assert!((c.normal_force - expected).abs() / expected < 0.05, "f_n {} vs {expected}", c.normal_force);
+        assert!(
+            (c.normal_force - expected).abs() / expected < 0.05,
+            "f_n {} vs {expected}",
+            c.normal_force
+        );
     }
 }
 
@@ -119,13 +128,19 @@ fn a_material_whose_sliding_mu_exceeds_its_static_mu_still_slips() {
     let start = position(&p.world, p.box_id).y;
     let drop = p.hold(2.0);
     let end = position(&p.world, p.box_id).y;
-    assert!(drop > 0.01 && end < start, "dropped {:.2} mm, ended {:+.2} mm", drop * 1e3, (end - start) * 1e3);
+    assert!(
+        drop > 0.01 && end < start,
+        "dropped {:.2} mm, ended {:+.2} mm",
+        drop * 1e3,
+        (end - start) * 1e3
+    );
 }
 
 #[test]
 fn the_threshold_is_coulombs_for_another_stiffness_too() {
     // Auto-γ gives this box a different stiffness; the force threshold must not move.
-    let config = InteractionConfig { gamma: coulomb_hands::GammaMode::Auto, ..InteractionConfig::default() };
+    let config =
+        InteractionConfig { gamma: coulomb_hands::GammaMode::Auto, ..InteractionConfig::default() };
     let gamma = pinch(config, 0.0).world.object_gamma(ObjectId(0)).unwrap();
     assert!((gamma - 400.0).abs() > 50.0, "auto γ {gamma} should differ from 400");
     // This softer γ sags m g / 2γ ≈ 3.5 mm before it holds: let that settle
@@ -149,7 +164,10 @@ fn one_or_nine_samples_give_the_same_total_force() {
         let total = p.world.object_state(p.box_id).unwrap().hand_force;
         let forces: Vec<Vec3> = p.world.contacts().iter().map(|c| c.force).collect();
         let sum: Vec3 = forces.iter().copied().sum();
-        assert!((total - sum).length() < 1e-6, "the samples' forces add up to the contacts' forces");
+        assert!(
+            (total - sum).length() < 1e-6,
+            "the samples' forces add up to the contacts' forces"
+        );
         forces
     };
     let (one, nine) = (total(1), total(9));
@@ -193,6 +211,9 @@ fn nine_samples_resist_twisting_that_one_sample_does_not() {
     let rho = PatchConfig::default().finger_radius;
     let stiffness = 2.0 * 8.0 * (400.0 / 9.0) * rho * rho;
     let elastic = (0.002 / stiffness).to_degrees();
-    assert!((nine - elastic).abs() < 0.25 * elastic, "9 samples: turned {nine:.1}°, elastic angle {elastic:.1}°");
+    assert!(
+        (nine - elastic).abs() < 0.25 * elastic,
+        "9 samples: turned {nine:.1}°, elastic angle {elastic:.1}°"
+    );
     assert!(one > 45.0, "1 sample: turned only {one:.1}°");
 }

@@ -29,7 +29,8 @@ fn push(tip_height: f32, ground_mu: f32) -> Outcome {
     let id = world.add_object(&desc).unwrap();
     let hand = world.add_hand(Side::Right);
     let rig = HandRig::adult(Side::Right);
-    let palm = Palm::from_normal_direction(Vec3::ZERO, -Vec3::Y, Vec3::X, rig.palm_half_extents).unwrap();
+    let palm =
+        Palm::from_normal_direction(Vec3::ZERO, -Vec3::Y, Vec3::X, rig.palm_half_extents).unwrap();
     let pointing = rig.pose(Vec3::ZERO, palm.rotation, [1.0, 0.0, 1.0, 1.0, 1.0]);
     // Shift the hand so the index tip starts 2 cm before the box's face.
     let index = pointing.fingers[Finger::Index as usize][2];
@@ -46,7 +47,11 @@ fn push(tip_height: f32, ground_mu: f32) -> Outcome {
             pointing.transformed(Vec3::ZERO, Quat::IDENTITY, offset + advance + lift)
         },
         |w, _| {
-            other_bones += w.contacts().iter().filter(|c| !matches!(c.bone, Bone::Finger(Finger::Index, _))).count();
+            other_bones += w
+                .contacts()
+                .iter()
+                .filter(|c| !matches!(c.bone, Bone::Finger(Finger::Index, _)))
+                .count();
         },
     );
     let state = world.object_state(id).unwrap();

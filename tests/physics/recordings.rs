@@ -26,12 +26,18 @@ fn all_four_recordings_decode_with_their_formats_frames_and_hands() {
         let rec = leap::load(&data(name)).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(rec.format_version, version, "{name}");
         assert_eq!(rec.frames.len(), frames, "{name}");
-        let playback = Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+        let playback =
+            Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+                .unwrap();
         assert_eq!(playback.tracks.len(), hands, "{name}");
         // Desktop recordings: hands hover 5–40 cm above the device.
         let pose = playback.sample(0, 0.5 * playback.duration).expect("tracked mid-way");
         pose.pose.validate(0).unwrap();
-        assert!((0.05..0.4).contains(&pose.pose.palm.center.y), "{name}: palm at {:?}", pose.pose.palm.center);
+        assert!(
+            (0.05..0.4).contains(&pose.pose.palm.center.y),
+            "{name}: palm at {:?}",
+            pose.pose.palm.center
+        );
     }
 }
 
@@ -49,13 +55,18 @@ fn the_packed_format_matches_its_own_header() {
     // from the knuckles back to them.
     let carps = hand.carps.expect("format 2 frames have carpPosition");
     let world = hand.converted(&Conversion::leap_desktop(Vec3::ZERO));
-    let pose = coulomb_hands::input::skeleton::hand_pose(hand, &Conversion::leap_desktop(Vec3::ZERO)).unwrap();
+    let pose =
+        coulomb_hands::input::skeleton::hand_pose(hand, &Conversion::leap_desktop(Vec3::ZERO))
+            .unwrap();
     let along = |p: Vec3| pose.palm.to_local(p).z;
     let carp_centre = world.carps.unwrap().iter().sum::<Vec3>() / 4.0;
     let knuckle_centre = (1..5).map(|f| world.joints[f][0]).sum::<Vec3>() / 4.0;
     let (back, front) = (along(carp_centre), along(knuckle_centre));
     let half = pose.palm.half_extents.z;
-    assert!((back.min(front) + half).abs() < 1e-4 && (back.max(front) - half).abs() < 1e-4, "palm ±{half} vs carps {back}, knuckles {front}");
+    assert!(
+        (back.min(front) + half).abs() < 1e-4 && (back.max(front) - half).abs() < 1e-4,
+        "palm ±{half} vs carps {back}, knuckles {front}"
+    );
     assert!(carps.iter().all(|c| c.is_finite()));
     // Recordings without it estimate the palm instead.
     let claps = leap::load(&data("three-claps.json.lz")).unwrap();
@@ -66,7 +77,9 @@ fn the_packed_format_matches_its_own_header() {
 fn two_handed_and_packed_replays_stay_finite_with_an_object_in_the_way() {
     for name in ["three-claps.json.lz", "pinch-57fps.json.lz"] {
         let rec = leap::load(&data(name)).unwrap();
-        let playback = Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+        let playback =
+            Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+                .unwrap();
         // A box where the hands are, so contacts actually happen.
         let centre = playback.sample(0, 0.5 * playback.duration).unwrap().pose.palm.center;
         let desc = ObjectDesc::cuboid("box", Vec3::splat(0.05), 0.05, centre);
@@ -75,7 +88,14 @@ fn two_handed_and_packed_replays_stay_finite_with_an_object_in_the_way() {
         let mut each = |step: &StepView| {
             let line = trace_line(step);
             lines += 1;
-            assert!(line.objects.iter().all(|o| o.pos.iter().chain(&o.linvel).chain(&o.rot).all(|v| v.is_finite())));
+            assert!(
+                line.objects.iter().all(|o| o
+                    .pos
+                    .iter()
+                    .chain(&o.linvel)
+                    .chain(&o.rot)
+                    .all(|v| v.is_finite()))
+            );
             Ok(())
         };
         let summary = replay(name, &playback, &mut world, &[], &mut [&mut each]).unwrap();
@@ -104,10 +124,13 @@ fn hold_in_grasp(name: &str, object: &str, grasp: usize) -> (f64, f64, f32, f32)
     use coulomb_hands::GammaMode;
     use coulomb_hands::run::replay::place_at_grasp;
     let rec = leap::load(&data(name)).unwrap();
-    let playback = Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    let playback =
+        Playback::new(name, &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+            .unwrap();
     let config = InteractionConfig { gamma: GammaMode::Auto, ..InteractionConfig::default() };
     let (mut world, _) = world_with_objects(config, &[]).unwrap();
-    let (fixture, site) = place_at_grasp(&mut world, &playback, object.parse().unwrap(), grasp).unwrap();
+    let (fixture, site) =
+        place_at_grasp(&mut world, &playback, object.parse().unwrap(), grasp).unwrap();
     let mut reference = None;
     let (mut drift, mut held_y, mut end_y) = (0.0f32, 0.0f32, 0.0f32);
     let mut each = |step: &StepView| {
@@ -141,7 +164,11 @@ fn a_box_in_a_fist_is_held_in_each_closing_and_falls_after() {
         let (from, to, drift, fall) = hold_in_grasp("grab.json.lz", "box:0.045:0.05", grasp);
         assert!(to - from > 0.1, "closing {grasp}: a real fist window: {from:.2}-{to:.2} s");
         assert!(drift < 0.02, "closing {grasp}: moved {:.1} mm in the fist", drift * 1e3);
-        assert!(fall > 0.05, "closing {grasp}: fell only {:.1} mm after the fist opened", fall * 1e3);
+        assert!(
+            fall > 0.05,
+            "closing {grasp}: fell only {:.1} mm after the fist opened",
+            fall * 1e3
+        );
     }
 }
 
@@ -163,10 +190,15 @@ fn openxr_webxr_and_mediapipe_layouts_round_trip_real_leap_hands() {
                 assert_eq!(xr.joints, hand.joints, "{name}: OpenXR joints");
                 if hand.carps.is_some() {
                     assert_eq!(xr.carps, hand.carps, "{name}: OpenXR metacarpals");
-                    assert_eq!(from_webxr(hand.id, hand.side, &to_webxr(&hand, Vec3::ZERO)).unwrap().carps, hand.carps);
+                    assert_eq!(
+                        from_webxr(hand.id, hand.side, &to_webxr(&hand, Vec3::ZERO)).unwrap().carps,
+                        hand.carps
+                    );
                 }
                 assert!(xr.widths.iter().zip(&hand.widths).all(|(a, b)| (a - b).abs() < 1e-7));
-                assert!(close(xr.palm_normal, hand.palm_normal) && close(xr.direction, hand.direction));
+                assert!(
+                    close(xr.palm_normal, hand.palm_normal) && close(xr.direction, hand.direction)
+                );
 
                 let web = from_webxr(hand.id, hand.side, &to_webxr(&hand, wrist)).unwrap();
                 let mp = from_mediapipe(hand.id, hand.side, &to_mediapipe(&hand, wrist)).unwrap();
@@ -174,7 +206,13 @@ fn openxr_webxr_and_mediapipe_layouts_round_trip_real_leap_hands() {
                     assert_eq!(h.joints, hand.joints, "{name}: {layout} joints");
                     // No palm joint: the palm is rebuilt from wrist and
                     // knuckles, and must face the way Leap's palm faces.
-                    assert!(h.palm_normal.dot(hand.palm_normal) > 0.7, "{name}: {layout} {:?} palm normal {:?} vs {:?}", hand.side, h.palm_normal, hand.palm_normal);
+                    assert!(
+                        h.palm_normal.dot(hand.palm_normal) > 0.7,
+                        "{name}: {layout} {:?} palm normal {:?} vs {:?}",
+                        hand.side,
+                        h.palm_normal,
+                        hand.palm_normal
+                    );
                     hand_pose(h, &Conversion::identity()).unwrap().validate(0).unwrap();
                 }
                 checked += 1;
@@ -203,7 +241,9 @@ fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
         t_us = t;
     }
     assert!(t_us > 1_300_000);
-    let playback = Playback::new("gaps", &frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    let playback =
+        Playback::new("gaps", &frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+            .unwrap();
     assert!(playback.sample(0, 0.075).is_some(), "the 50 ms gap is bridged");
     assert!(playback.sample(0, 1.15).is_none(), "the 300 ms gap is a loss");
     assert!(playback.sample(0, 1.35).is_some(), "tracked again after it");
@@ -224,7 +264,10 @@ fn short_dropouts_are_bridged_and_long_ones_release_the_hand() {
         // The last frame before the long gap is at 0.99 s.
         if line.t > 0.99 && line.t < 1.3 {
             ended_in_gap |= w.events().iter().any(|e| e.kind == ContactEventKind::Ended);
-            assert!(line.t < 0.995 || w.contacts().is_empty(), "no contacts while the hand is lost");
+            assert!(
+                line.t < 0.995 || w.contacts().is_empty(),
+                "no contacts while the hand is lost"
+            );
         }
         Ok(())
     };
@@ -245,7 +288,9 @@ fn a_scene_file_puts_objects_in_the_replay() {
     )
     .unwrap();
     let rec = leap::load(&data("three-claps.json.lz")).unwrap();
-    let playback = Playback::new("claps", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    let playback =
+        Playback::new("claps", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+            .unwrap();
     let (mut world, _) = world_with_objects(InteractionConfig::default(), &[]).unwrap();
     world.add_scene(&scene).unwrap();
     let summary = replay("claps", &playback, &mut world, &[], &mut []).unwrap();
@@ -261,9 +306,12 @@ fn a_recorded_fist_replay_with_its_fixture_release_replays_bit_for_bit() {
     use coulomb_hands::pipeline::Call;
     use coulomb_hands::run::replay::{place_at_grasp, replay_world};
     let rec = leap::load(&data("grab.json.lz")).unwrap();
-    let playback = Playback::new("grab", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE).unwrap();
+    let playback =
+        Playback::new("grab", &rec.frames, &Conversion::leap_desktop(Vec3::ZERO), DEFAULT_GRACE)
+            .unwrap();
     let mut world = replay_world(InteractionConfig::default(), true).unwrap();
-    let (fixture, _) = place_at_grasp(&mut world, &playback, "box:0.045:0.05".parse().unwrap(), 0).unwrap();
+    let (fixture, _) =
+        place_at_grasp(&mut world, &playback, "box:0.045:0.05".parse().unwrap(), 0).unwrap();
     let mut live = Vec::new();
     let mut each = |step: &StepView| {
         live.push(object_states(step.world));
@@ -278,5 +326,8 @@ fn a_recorded_fist_replay_with_its_fixture_release_replays_bit_for_bit() {
     session.replay(|w| replayed.push(object_states(w))).unwrap();
     assert_eq!(replayed.len(), live.len());
     let bits = |s: &coulomb_hands::ObjectState| s.position.to_array().map(f32::to_bits);
-    assert!(live.iter().zip(&replayed).all(|(a, b)| a.iter().map(bits).eq(b.iter().map(bits))), "replay diverged");
+    assert!(
+        live.iter().zip(&replayed).all(|(a, b)| a.iter().map(bits).eq(b.iter().map(bits))),
+        "replay diverged"
+    );
 }

@@ -17,7 +17,18 @@ fn run(s: &Scenario) -> ScenarioReport {
 }
 
 fn table(r: &ScenarioReport) -> String {
-    r.checks.iter().map(|c| format!("\n  {} {} = {} (bound {})", if c.passed { "ok" } else { "FAIL" }, c.name, c.value, c.bound)).collect()
+    r.checks
+        .iter()
+        .map(|c| {
+            format!(
+                "\n  {} {} = {} (bound {})",
+                if c.passed { "ok" } else { "FAIL" },
+                c.name,
+                c.value,
+                c.bound
+            )
+        })
+        .collect()
 }
 
 #[test]
@@ -39,7 +50,10 @@ fn variant(name: &str, from: &str, to: &str) -> ScenarioReport {
     run(&Scenario::parse(name, &text.replace(from, to), Path::new(".")).unwrap())
 }
 
-fn check<'a>(r: &'a ScenarioReport, name: &str) -> &'a coulomb_hands::run::scenario::check::CheckResult {
+fn check<'a>(
+    r: &'a ScenarioReport,
+    name: &str,
+) -> &'a coulomb_hands::run::scenario::check::CheckResult {
     r.checks.iter().find(|c| c.name.starts_with(name)).unwrap()
 }
 
@@ -56,31 +70,43 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     assert!(!slide.passed, "{}", table(&slide));
     // A cube too slippery for the pinch's squeeze: it stays on the floor.
     let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05}, "surface_friction": 0.5, "source": "test"}"#;
-    let grasp = variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
+    let grasp =
+        variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
     assert!(!check(&grasp, "lifted").passed, "{}", table(&grasp));
     // Without the other hand's thumb there is nothing to balance against.
-    let alone = variant("two-hand-balance", r#""curl": [0.5, 1, 1, 1, 1]"#, r#""curl": [0, 1, 1, 1, 1]"#);
+    let alone =
+        variant("two-hand-balance", r#""curl": [0.5, 1, 1, 1, 1]"#, r#""curl": [0, 1, 1, 1, 1]"#);
     assert!(!check(&alone, "lifted").passed, "{}", table(&alone));
     // The spin needs the right finger's friction either side of the axis:
     // a slippery cube slides under it and barely turns.
-    let ice = variant("spin-two-hands", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
+    let ice =
+        variant("spin-two-hands", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
     assert!(!check(&ice, "spun").passed, "{}", table(&ice));
     // The cross turns in one hand only because the fingertip pivots'
     // friction holds it against the middle finger's push. A slicker cross
     // (μ 0.2) is still lifted, and the first push still turns it, but the
     // pivots let it go under the pushes: it is dropped.
     let slick = r#"{"name": "slick", "skin": {"static_mu": 0.2, "dynamic_mu": 0.2}, "surface_friction": 0.5, "source": "test"}"#;
-    let pushed_out = variant("spin-one-hand", r#""material": "wood""#, &format!(r#""material": {slick}"#));
+    let pushed_out =
+        variant("spin-one-hand", r#""material": "wood""#, &format!(r#""material": {slick}"#));
     assert!(!check(&pushed_out, "lowest").passed, "{}", table(&pushed_out));
     // A loose wrap round the mallet's handle: it is not held.
     let loose = variant("tool-knock-tower", "0.9, 0.9, 0.9, 0.9", "0.6, 0.6, 0.6, 0.6");
     assert!(!loose.passed, "{}", table(&loose));
     // The same swing with the mallet elsewhere: the hand alone passes over
     // the tower, which stands. It is the mallet that knocks it down.
-    let empty = variant("tool-knock-tower", r#""position": [0.0, 0.02, 0.0]"#, r#""position": [1.0, 0.02, 0.0]"#);
+    let empty = variant(
+        "tool-knock-tower",
+        r#""position": [0.0, 0.02, 0.0]"#,
+        r#""position": [1.0, 0.02, 0.0]"#,
+    );
     assert!(!check(&empty, "tower fell: top").passed, "{}", table(&empty));
     // A hand too soft to hold the falling block: it falls through.
-    let catch = variant("catch", r#""duration": 2.0,"#, r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#);
+    let catch = variant(
+        "catch",
+        r#""duration": 2.0,"#,
+        r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#,
+    );
     assert!(!catch.passed, "{}", table(&catch));
 }
 
@@ -102,6 +128,8 @@ fn a_scenario_hand_may_replay_a_recording() {
     let s = Scenario::parse("claps.json", text, &dir).unwrap();
     let report = run(&s);
     assert!(report.passed, "{}", table(&report));
-    let bad = Scenario::parse("claps.json", &text.replace("three-claps", "four-claps"), &dir).unwrap_err().to_string();
+    let bad = Scenario::parse("claps.json", &text.replace("three-claps", "four-claps"), &dir)
+        .unwrap_err()
+        .to_string();
     assert!(bad.contains("claps.json: hands[0].recording") && bad.contains("four-claps"), "{bad}");
 }

@@ -15,8 +15,9 @@ fn slide_angle(material: Material) -> (f32, f32) {
     let centre = Vec3::new(0.0, 0.3, 0.0);
     // A flat 6 × 2 × 6 cm, 60 g box resting on the palm's top face.
     let size = Vec3::new(0.06, 0.02, 0.06);
-    let desc = ObjectDesc::cuboid("box", size, 0.06, centre + Vec3::Y * (palm_half.y + size.y / 2.0))
-        .with_material(material);
+    let desc =
+        ObjectDesc::cuboid("box", size, 0.06, centre + Vec3::Y * (palm_half.y + size.y / 2.0))
+            .with_material(material);
     let id = world.add_object(&desc).unwrap();
     let hand = world.add_hand(Side::Right);
     let base = parked_hand(Side::Right);
@@ -24,7 +25,8 @@ fn slide_angle(material: Material) -> (f32, f32) {
     let pose_at = |t: f32| {
         let tilt = (DEG_PER_S * t).to_radians();
         let mut pose = base.clone();
-        pose.palm = Palm { center: centre, rotation: Quat::from_rotation_z(tilt), half_extents: palm_half };
+        pose.palm =
+            Palm { center: centre, rotation: Quat::from_rotation_z(tilt), half_extents: palm_half };
         pose
     };
     let dt = world.config().dt;
@@ -41,14 +43,17 @@ fn slide_angle(material: Material) -> (f32, f32) {
         if tilt >= 1.0 && rest.is_none() {
             rest = Some(local);
         }
-        if first_dynamic.is_none() && world.contacts().iter().any(|c| c.state == FrictionState::Dynamic) {
+        if first_dynamic.is_none()
+            && world.contacts().iter().any(|c| c.state == FrictionState::Dynamic)
+        {
             first_dynamic = Some(tilt);
         }
         if let Some(r) = rest
-            && (local - r).length() > 0.003 {
-                assert_eq!(world.contacts().len(), 1, "only the palm touches the box");
-                return (tilt, first_dynamic.unwrap_or(f32::NAN));
-            }
+            && (local - r).length() > 0.003
+        {
+            assert_eq!(world.contacts().len(), 1, "only the palm touches the box");
+            return (tilt, first_dynamic.unwrap_or(f32::NAN));
+        }
     }
     panic!("the box never slid up to 40°");
 }

@@ -29,11 +29,17 @@ impl InteractionWorld {
                 kept.binary_search_by_key(&key, |c| contact_key(&c.contact)).is_ok()
             };
             let view = |o| world.object_view(o, StabilityScale::NONE);
-            step.detector.new_touches(bones, &step.boxes, view, known, |bone, motion, object, prox| {
-                let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
-                let proximity = Some(prox);
-                step.found.push(Candidate { contact, proximity, motion, is_new: true });
-            });
+            step.detector.new_touches(
+                bones,
+                &step.boxes,
+                view,
+                known,
+                |bone, motion, object, prox| {
+                    let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
+                    let proximity = Some(prox);
+                    step.found.push(Candidate { contact, proximity, motion, is_new: true });
+                },
+            );
         }
         step.candidates.append(&mut step.found);
     }

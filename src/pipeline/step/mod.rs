@@ -22,12 +22,14 @@ mod keep;
 mod update;
 
 use super::config::InteractionConfig;
+use super::record::Call;
 use super::stability::StabilityScale;
 use super::world::InteractionWorld;
-use super::record::Call;
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
-use crate::contact::{BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView};
+use crate::contact::{
+    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView,
+};
 use crate::friction::ForceCap;
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;

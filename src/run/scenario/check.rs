@@ -137,10 +137,11 @@ impl Check {
             | Measure::Speed { object, .. }
             | Measure::PathDeviation { object, .. }
             | Measure::Contacts { object, .. } => (vec![object.as_str()], None),
-            Measure::DriftInHand { object, hand, .. } | Measure::TurnInHand { object, hand, .. } => {
-                (vec![object.as_str()], Some(*hand))
+            Measure::DriftInHand { object, hand, .. }
+            | Measure::TurnInHand { object, hand, .. } => (vec![object.as_str()], Some(*hand)),
+            Measure::GroupDisplacement { except, .. } => {
+                (except.iter().map(String::as_str).collect(), None)
             }
-            Measure::GroupDisplacement { except, .. } => (except.iter().map(String::as_str).collect(), None),
         }
     }
 
@@ -188,7 +189,8 @@ impl Check {
             }
             Measure::DriftInHand { object, hand, from, to } => {
                 let o = index(object);
-                let local = |s: usize| h.palms[s][*hand].map(|(c, r)| r.inverse() * (h.poses[s][o].0 - c));
+                let local =
+                    |s: usize| h.palms[s][*hand].map(|(c, r)| r.inverse() * (h.poses[s][o].0 - c));
                 let reference = local(h.step(*from));
                 h.steps(*from, *to)
                     .map(|s| match (reference, local(s)) {
@@ -199,7 +201,8 @@ impl Check {
             }
             Measure::TurnInHand { object, hand, from, to } => {
                 let o = index(object);
-                let local = |s: usize| h.palms[s][*hand].map(|(_, r)| r.inverse() * h.poses[s][o].1);
+                let local =
+                    |s: usize| h.palms[s][*hand].map(|(_, r)| r.inverse() * h.poses[s][o].1);
                 let reference = local(h.step(*from));
                 h.steps(*from, *to)
                     .map(|s| match (reference, local(s)) {
@@ -221,12 +224,16 @@ impl Check {
                         let twist = Quat::from_xyzw(p.x, p.y, p.z, delta.w).normalize();
                         let (ax, angle) = twist.to_axis_angle();
                         let signed = if ax.dot(*axis) < 0.0 { -angle } else { angle };
-                        let wrapped = (signed + std::f32::consts::PI).rem_euclid(std::f32::consts::TAU) - std::f32::consts::PI;
+                        let wrapped = (signed + std::f32::consts::PI)
+                            .rem_euclid(std::f32::consts::TAU)
+                            - std::f32::consts::PI;
                         wrapped.to_degrees()
                     }
                 }
             }
-            Measure::Tilt { object, at } => (pose(index(object), *at).1 * Vec3::Y).angle_between(Vec3::Y).to_degrees(),
+            Measure::Tilt { object, at } => {
+                (pose(index(object), *at).1 * Vec3::Y).angle_between(Vec3::Y).to_degrees()
+            }
             Measure::Speed { object, at } => h.speeds[h.step(*at)][index(object)],
             Measure::GroupDisplacement { prefix, except, from, to } => {
                 let (a, b) = (h.step(*from), h.step(to.unwrap_or(h.end())));
@@ -239,18 +246,26 @@ impl Check {
             }
             Measure::PathDeviation { object, path, from, to } => {
                 let o = index(object);
-                h.steps(*from, *to).map(|s| distance_to_path(h.poses[s][o].0, path)).fold(0.0, f32::max)
+                h.steps(*from, *to)
+                    .map(|s| distance_to_path(h.poses[s][o].0, path))
+                    .fold(0.0, f32::max)
             }
             Measure::Contacts { object, at } => h.contacts[h.step(*at)][index(object)] as f32,
         };
-        let (min_ok, max_ok) = (self.min.is_none_or(|m| value >= m), self.max.is_none_or(|m| value <= m));
+        let (min_ok, max_ok) =
+            (self.min.is_none_or(|m| value >= m), self.max.is_none_or(|m| value <= m));
         let bound = match (self.min, self.max) {
             (Some(a), Some(b)) => format!("{a} ..= {b}"),
             (Some(a), None) => format!(">= {a}"),
             (None, Some(b)) => format!("<= {b}"),
             (None, None) => String::new(),
         };
-        CheckResult { name: self.name.clone(), value, bound, passed: value.is_finite() && min_ok && max_ok }
+        CheckResult {
+            name: self.name.clone(),
+            value,
+            bound,
+            passed: value.is_finite() && min_ok && max_ok,
+        }
     }
 }
 
@@ -315,14 +330,39 @@ mod tests {
     #[test]
     fn displacement_rotation_and_path_measures() {
         let q90 = Quat::from_rotation_y(90f32.to_radians());
-        let h = history(&[Vec3::ZERO, Vec3::new(0.1, 0.0, 0.0), Vec3::new(0.2, 0.0, 0.1)], &[Quat::IDENTITY, Quat::IDENTITY, q90]);
-        let d = check(Measure::Displacement { object: "box".into(), from: 0.5, to: None, axis: Some(Vec3::X) }, Some(0.15), None);
+        let h = history(
+            &[Vec3::ZERO, Vec3::new(0.1, 0.0, 0.0), Vec3::new(0.2, 0.0, 0.1)],
+            &[Quat::IDENTITY, Quat::IDENTITY, q90],
+        );
+        let d = check(
+            Measure::Displacement {
+                object: "box".into(),
+                from: 0.5,
+                to: None,
+                axis: Some(Vec3::X),
+            },
+            Some(0.15),
+            None,
+        );
         let r = d.evaluate(&h);
         assert!((r.value - 0.2).abs() < 1e-6 && r.passed && r.bound == ">= 0.15", "{r:?}");
-        let spin = check(Measure::Rotation { object: "box".into(), from: 0.5, to: None, axis: Some(-Vec3::Y) }, None, Some(-80.0));
+        let spin = check(
+            Measure::Rotation { object: "box".into(), from: 0.5, to: None, axis: Some(-Vec3::Y) },
+            None,
+            Some(-80.0),
+        );
         let r = spin.evaluate(&h);
         assert!((r.value + 90.0).abs() < 0.01 && r.passed, "{r:?}");
-        let path = check(Measure::PathDeviation { object: "box".into(), path: vec![[0.0, 0.0], [0.2, 0.0]], from: 0.5, to: None }, None, Some(0.05));
+        let path = check(
+            Measure::PathDeviation {
+                object: "box".into(),
+                path: vec![[0.0, 0.0], [0.2, 0.0]],
+                from: 0.5,
+                to: None,
+            },
+            None,
+            Some(0.05),
+        );
         let r = path.evaluate(&h);
         assert!((r.value - 0.1).abs() < 1e-6 && !r.passed, "{r:?}");
     }
@@ -332,7 +372,12 @@ mod tests {
         let m = Measure::Height { object: "box".into(), at: 1.0 };
         assert!(check(m.clone(), None, None).validate().is_err());
         assert!(check(m, Some(0.0), None).validate().is_ok());
-        let d = Measure::Displacement { object: "box".into(), from: 0.0, to: None, axis: Some(Vec3::new(1.0, 1.0, 0.0)) };
+        let d = Measure::Displacement {
+            object: "box".into(),
+            from: 0.0,
+            to: None,
+            axis: Some(Vec3::new(1.0, 1.0, 0.0)),
+        };
         assert!(check(d, Some(0.0), None).validate().unwrap_err().to_string().contains("unit"));
     }
 }

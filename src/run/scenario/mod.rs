@@ -188,7 +188,8 @@ impl Scenario {
                     e
                 } else {
                     let names: Vec<&str> = shipped().iter().map(|s| s.0).collect();
-                    let why = format!("no such file, nor a shipped scenario ({})", names.join(", "));
+                    let why =
+                        format!("no such file, nor a shipped scenario ({})", names.join(", "));
                     ScenarioError::new(name_or_file, why)
                 }
             }),
@@ -251,7 +252,11 @@ impl Scenario {
         let steps = (self.duration / self.config.dt).round() as usize;
         driver.run(steps, &mut drive::observers(vec![&mut history], observers))?;
         let checks: Vec<CheckResult> = self.checks.iter().map(|c| c.evaluate(&history)).collect();
-        Ok(ScenarioReport { name: self.name.clone(), passed: checks.iter().all(|c| c.passed), checks })
+        Ok(ScenarioReport {
+            name: self.name.clone(),
+            passed: checks.iter().all(|c| c.passed),
+            checks,
+        })
     }
 }
 
@@ -282,7 +287,8 @@ fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
         }
         (None, true) => Err(field("keys", "a scripted hand needs keys (or give a recording)")),
         (None, false) => {
-            let side = h.side.ok_or(field("side", "a scripted hand needs \"left\" or \"right\""))?;
+            let side =
+                h.side.ok_or(field("side", "a scripted hand needs \"left\" or \"right\""))?;
             if h.offset != Vec3::ZERO {
                 let why = "only for recordings; key palm positions are in world coordinates";
                 return Err(field("offset", why));
@@ -307,13 +313,19 @@ fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
             }
             let recording = crate::input::leap::load(&dir.join(path))?;
             let conversion = Conversion::leap_desktop(h.offset);
-            let playback =
-                Playback::new(&recording.source_name, &recording.frames, &conversion, DEFAULT_GRACE)?;
+            let playback = Playback::new(
+                &recording.source_name,
+                &recording.frames,
+                &conversion,
+                DEFAULT_GRACE,
+            )?;
             let track = match h.side {
                 None => 0,
-                Some(side) => playback.tracks.iter().position(|t| t.side == side).ok_or_else(|| {
-                    field("side", &format!("the recording has no {side:?} hand"))
-                })?,
+                Some(side) => {
+                    playback.tracks.iter().position(|t| t.side == side).ok_or_else(|| {
+                        field("side", &format!("the recording has no {side:?} hand"))
+                    })?
+                }
             };
             if playback.tracks.is_empty() {
                 return Err(field("recording", "it tracks no hands"));
@@ -341,7 +353,9 @@ mod tests {
             "shape": {"Sphere": {"radius": 0.02}}, "mass": 0.1, "material": "wood", "position": [0, 0.1, 0]}]},
             "hands": [{"side": "right", "keys": [{"t": 0.0, "palm": [0, 0.3, 0]}]}],
             "checks": [CHECK]}"#;
-        let parse = |check: &str| Scenario::parse("x.json", &base.replace("CHECK", check), Path::new(".")).map(|_| ());
+        let parse = |check: &str| {
+            Scenario::parse("x.json", &base.replace("CHECK", check), Path::new(".")).map(|_| ())
+        };
         let ok = r#"{"name": "h", "measure": {"kind": "height", "object": "box", "at": 0.5}, "min": 0.0}"#;
         parse(ok).unwrap();
         let e = parse(&ok.replace("\"box\"", "\"bxo\"")).unwrap_err().to_string();
@@ -350,13 +364,23 @@ mod tests {
         assert!(e.contains("x.json: line") && e.contains("when"), "{e}");
         let e = parse(&ok.replace(", \"min\": 0.0", "")).unwrap_err().to_string();
         assert!(e.contains("needs a bound"), "{e}");
-        let e = Scenario::parse("x.json", &base.replace("CHECK", ok).replace("\"mass\": 0.1", "\"mass\": 0"), Path::new("."))
-            .unwrap_err()
-            .to_string();
+        let e = Scenario::parse(
+            "x.json",
+            &base.replace("CHECK", ok).replace("\"mass\": 0.1", "\"mass\": 0"),
+            Path::new("."),
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("'box'") && e.contains("mass"), "{e}");
-        let e = Scenario::parse("x.json", &base.replace("CHECK", ok).replace("[0, 0.3, 0]", "[0, 0.3, 0]}, {\"t\": 0.0, \"palm\": [0, 0, 0]"), Path::new("."))
-            .unwrap_err()
-            .to_string();
+        let e = Scenario::parse(
+            "x.json",
+            &base
+                .replace("CHECK", ok)
+                .replace("[0, 0.3, 0]", "[0, 0.3, 0]}, {\"t\": 0.0, \"palm\": [0, 0, 0]"),
+            Path::new("."),
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("hands[0].keys[1].t"), "{e}");
         let e = Scenario::find("no-such-scenario").unwrap_err().to_string();
         assert!(e.contains("push"), "lists the shipped ones: {e}");

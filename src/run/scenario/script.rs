@@ -174,7 +174,11 @@ impl Script {
             opposition: lerp(a.opposition, b.opposition),
             spread_deg: std::array::from_fn(|f| lerp(a.spread_deg[f], b.spread_deg[f])),
         };
-        self.rig.pose_articulated(a.palm.lerp(b.palm, s), a.rotation().slerp(b.rotation(), s).normalize(), &joints)
+        self.rig.pose_articulated(
+            a.palm.lerp(b.palm, s),
+            a.rotation().slerp(b.rotation(), s).normalize(),
+            &joints,
+        )
     }
 
     /// When the last key is reached (s).
@@ -199,7 +203,15 @@ mod tests {
     use super::*;
 
     fn key(t: f32, y: f32, curl: f32) -> Key {
-        Key { t, palm: Vec3::new(0.0, y, 0.0), rotation_deg: Vec3::ZERO, curl: Curl::All(curl), knuckle: None, opposition: 0.0, spread_deg: [0.0; 4] }
+        Key {
+            t,
+            palm: Vec3::new(0.0, y, 0.0),
+            rotation_deg: Vec3::ZERO,
+            curl: Curl::All(curl),
+            knuckle: None,
+            opposition: 0.0,
+            spread_deg: [0.0; 4],
+        }
     }
 
     #[test]
@@ -229,13 +241,23 @@ mod tests {
 
     #[test]
     fn bad_keys_name_the_key_and_field() {
-        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 0.0), key(0.0, 0.2, 0.0)]).unwrap_err().to_string();
+        let e = Script::new(Side::Left, vec![key(0.0, 0.1, 0.0), key(0.0, 0.2, 0.0)])
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("keys[1].t"), "{e}");
         let e = Script::new(Side::Left, vec![key(0.0, f32::NAN, 0.0)]).unwrap_err().to_string();
         assert!(e.starts_with("keys[0].palm"), "{e}");
         let e = Script::new(Side::Left, vec![key(0.0, 0.1, 1.5)]).unwrap_err().to_string();
         assert!(e.starts_with("keys[0].curl"), "{e}");
-        let e = Script::new(Side::Left, vec![Key { knuckle: Some(Curl::Each([0.0, 0.5, -0.1, 0.0, 0.0])), ..key(0.0, 0.1, 0.0) }]).unwrap_err().to_string();
+        let e = Script::new(
+            Side::Left,
+            vec![Key {
+                knuckle: Some(Curl::Each([0.0, 0.5, -0.1, 0.0, 0.0])),
+                ..key(0.0, 0.1, 0.0)
+            }],
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.starts_with("keys[0].knuckle"), "{e}");
         assert!(Script::new(Side::Left, vec![]).is_err());
     }

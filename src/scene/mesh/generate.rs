@@ -26,7 +26,8 @@ pub fn u_bracket(width: f32, height: f32, depth: f32, thickness: f32) -> Triangl
         Vec2::new(-w, t),
     ];
     // The cap as three rectangles: base, right arm, left arm.
-    let cap: [[usize; 3]; 8] = [[0, 1, 2], [0, 2, 5], [0, 5, 6], [0, 6, 9], [5, 2, 3], [5, 3, 4], [9, 6, 7], [9, 7, 8]];
+    let cap: [[usize; 3]; 8] =
+        [[0, 1, 2], [0, 2, 5], [0, 5, 6], [0, 6, 9], [5, 2, 3], [5, 3, 4], [9, 6, 7], [9, 7, 8]];
     extrude(&outline, &cap, depth)
 }
 
@@ -111,7 +112,16 @@ pub fn pawn() -> TriangleMesh {
             (0.009 * a.cos().max(0.0), 0.041 + 0.009 * a.sin())
         })
         .collect();
-    let mut profile = vec![(0.014, 0.0), (0.014, 0.004), (0.011, 0.007), (0.007, 0.012), (0.005, 0.025), (0.008, 0.029), (0.008, 0.031), (0.005, 0.033)];
+    let mut profile = vec![
+        (0.014, 0.0),
+        (0.014, 0.004),
+        (0.011, 0.007),
+        (0.007, 0.012),
+        (0.005, 0.025),
+        (0.008, 0.029),
+        (0.008, 0.031),
+        (0.005, 0.033),
+    ];
     profile.extend(head);
     lathe(&profile, 24)
 }
@@ -134,7 +144,8 @@ pub fn to_gltf(mesh: &TriangleMesh, translation: Vec3) -> String {
     use base64::Engine;
     let bytes = buffer(mesh);
     let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
-    gltf_json(mesh, translation, Some(format!("data:application/octet-stream;base64,{data}"))).to_string()
+    gltf_json(mesh, translation, Some(format!("data:application/octet-stream;base64,{data}")))
+        .to_string()
 }
 
 /// The same as a binary GLB: a JSON chunk and a binary chunk, each padded

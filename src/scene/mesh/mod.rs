@@ -102,7 +102,11 @@ impl TriangleMesh {
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
         let fail = |problem: MeshProblem| MeshError::new(&file, problem.to_string());
-        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).unwrap_or_default();
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .unwrap_or_default();
         let mesh = match ext.as_str() {
             "obj" => load_obj(path),
             "stl" => load_stl(path),
@@ -145,7 +149,10 @@ impl TriangleMesh {
 
     /// The same mesh scaled about the origin.
     pub fn scaled(&self, k: f32) -> TriangleMesh {
-        TriangleMesh { vertices: self.vertices.iter().map(|v| *v * k).collect(), triangles: self.triangles.clone() }
+        TriangleMesh {
+            vertices: self.vertices.iter().map(|v| *v * k).collect(),
+            triangles: self.triangles.clone(),
+        }
     }
 
     /// Wavefront OBJ text of the mesh (1-based indices).
@@ -182,13 +189,25 @@ impl TriangleMesh {
         if !(voxel.is_finite() && voxel > 0.0) || cells.x * cells.y * cells.z > 4.0e6 {
             return Err(MeshProblem::VoxelSize { voxel, size: hi - lo });
         }
-        let set = VoxelSet::with_voxel_size(&self.vertices, &self.triangles, voxel, FillMode::default(), false);
+        let set = VoxelSet::with_voxel_size(
+            &self.vertices,
+            &self.triangles,
+            voxel,
+            FillMode::default(),
+            false,
+        );
         let mut cells: Vec<[i32; 3]> = set.voxels().iter().map(|v| v.coords.to_array()).collect();
         cells.sort_by_key(|c| (c[2], c[1], c[0]));
         cells.dedup();
         let scale = set.scale;
-        let centre_of = |c: [i32; 3]| set.origin + Vec3::new(c[0] as f32 + 0.5, c[1] as f32 + 0.5, c[2] as f32 + 0.5) * scale;
-        if let Ok(solid) = TriMesh::with_flags(self.vertices.clone(), self.triangles.clone(), TriMeshFlags::ORIENTED) {
+        let centre_of = |c: [i32; 3]| {
+            set.origin + Vec3::new(c[0] as f32 + 0.5, c[1] as f32 + 0.5, c[2] as f32 + 0.5) * scale
+        };
+        if let Ok(solid) = TriMesh::with_flags(
+            self.vertices.clone(),
+            self.triangles.clone(),
+            TriMeshFlags::ORIENTED,
+        ) {
             cells.retain(|&c| solid.contains_local_point(centre_of(c)));
         }
         let mut boxes = Vec::new();
@@ -201,7 +220,10 @@ impl TriangleMesh {
                 end = cells[i];
             }
             let (a, b) = (centre_of(start), centre_of(end));
-            boxes.push((0.5 * (a + b), Vec3::new(0.5 * (b.x - a.x) + 0.5 * scale, 0.5 * scale, 0.5 * scale)));
+            boxes.push((
+                0.5 * (a + b),
+                Vec3::new(0.5 * (b.x - a.x) + 0.5 * scale, 0.5 * scale, 0.5 * scale),
+            ));
             i += 1;
         }
         if boxes.is_empty() {
@@ -222,7 +244,8 @@ fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
         let m = model.mesh;
         let base = mesh.vertices.len() as u32;
         mesh.vertices.extend(m.positions.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])));
-        mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]));
+        mesh.triangles
+            .extend(m.indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]));
     }
     Ok(mesh)
 }
@@ -242,7 +265,8 @@ fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
 fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
     let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
-    let gltf = gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
+    let gltf =
+        gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut buffers = Vec::new();
     for buffer in gltf.buffers() {
@@ -250,10 +274,15 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
             gltf::buffer::Source::Bin => gltf.blob.clone().ok_or("the GLB has no binary chunk")?,
             gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
                 Some(rest) => {
-                    let (_, b64) = rest.split_once(";base64,").ok_or(format!("buffer {}: unsupported data URI", buffer.index()))?;
-                    base64::engine::general_purpose::STANDARD.decode(b64).map_err(|e| format!("buffer {}: {e}", buffer.index()))?
+                    let (_, b64) = rest
+                        .split_once(";base64,")
+                        .ok_or(format!("buffer {}: unsupported data URI", buffer.index()))?;
+                    base64::engine::general_purpose::STANDARD
+                        .decode(b64)
+                        .map_err(|e| format!("buffer {}: {e}", buffer.index()))?
                 }
-                None => std::fs::read(dir.join(uri)).map_err(|e| format!("buffer {} ({uri}): {e}", buffer.index()))?,
+                None => std::fs::read(dir.join(uri))
+                    .map_err(|e| format!("buffer {} ({uri}): {e}", buffer.index()))?,
             },
         };
         buffers.push(data);
@@ -263,7 +292,8 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
         Some(scene) => scene.nodes().collect(),
         None => gltf.nodes().collect(),
     };
-    let mut stack: Vec<(gltf::Node, glam::Mat4)> = roots.into_iter().map(|n| (n, glam::Mat4::IDENTITY)).collect();
+    let mut stack: Vec<(gltf::Node, glam::Mat4)> =
+        roots.into_iter().map(|n| (n, glam::Mat4::IDENTITY)).collect();
     while let Some((node, parent)) = stack.pop() {
         let transform = parent * glam::Mat4::from_cols_array_2d(&node.transform().matrix());
         if let Some(m) = node.mesh() {
@@ -280,7 +310,9 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
                     Some(i) => i.into_u32().collect(),
                     None => (0..count).collect(),
                 };
-                mesh.triangles.extend(indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]));
+                mesh.triangles.extend(
+                    indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]),
+                );
             }
         }
         stack.extend(node.children().map(|c| (c, transform)));
@@ -293,7 +325,8 @@ mod tests {
     use super::*;
 
     fn temp(name: &str, contents: &[u8]) -> std::path::PathBuf {
-        let path = std::env::temp_dir().join(format!("coulomb-hands-{}-{name}", std::process::id()));
+        let path =
+            std::env::temp_dir().join(format!("coulomb-hands-{}-{name}", std::process::id()));
         std::fs::write(&path, contents).unwrap();
         path
     }
@@ -324,9 +357,18 @@ mod tests {
         let from_gltf = TriangleMesh::load(&temp("u.gltf", gltf.as_bytes())).unwrap();
         assert_eq!(from_gltf.triangles.len(), cube.triangles.len());
         let ((a, b), (c, d)) = (from_obj.bounds(), from_gltf.bounds());
-        assert!((a + Vec3::Y - c).length() < 1e-6 && (b + Vec3::Y - d).length() < 1e-6, "node transform applied");
-        let from_glb = TriangleMesh::load(&temp("u.glb", &generate::to_glb(&cube, Vec3::new(0.0, 1.0, 0.0)))).unwrap();
-        assert_eq!((from_glb.vertices, from_glb.triangles), (from_gltf.vertices, from_gltf.triangles), "GLB = glTF");
+        assert!(
+            (a + Vec3::Y - c).length() < 1e-6 && (b + Vec3::Y - d).length() < 1e-6,
+            "node transform applied"
+        );
+        let from_glb =
+            TriangleMesh::load(&temp("u.glb", &generate::to_glb(&cube, Vec3::new(0.0, 1.0, 0.0))))
+                .unwrap();
+        assert_eq!(
+            (from_glb.vertices, from_glb.triangles),
+            (from_gltf.vertices, from_gltf.triangles),
+            "GLB = glTF"
+        );
         std::fs::remove_file(obj).ok();
     }
 
@@ -347,7 +389,8 @@ mod tests {
     fn voxel_boxes_fill_the_u_but_not_its_gap() {
         let u = generate::u_bracket(0.06, 0.04, 0.02, 0.01);
         let boxes = u.voxel_boxes(0.005, 4096).unwrap();
-        let inside = |p: Vec3| boxes.iter().any(|(c, h)| ((p - *c).abs() - *h).max_element() <= 1e-6);
+        let inside =
+            |p: Vec3| boxes.iter().any(|(c, h)| ((p - *c).abs() - *h).max_element() <= 1e-6);
         assert!(inside(Vec3::new(-0.025, 0.02, 0.0)), "an arm is solid");
         assert!(inside(Vec3::new(0.0, 0.005, 0.0)), "the base is solid");
         assert!(!inside(Vec3::new(0.0, 0.03, 0.0)), "the gap is empty");
