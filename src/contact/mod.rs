@@ -160,8 +160,9 @@ impl Contact {
     }
 
     /// Evaluates the contact law for this step and updates the anchors:
-    /// reaction → resolve → slip → spread over the patch. Appends the
-    /// sample forces on the object, with their points, to `forces`.
+    /// reaction → resolve → slip → spread over the patch. Leaves the
+    /// sample forces on the object, with their points, in
+    /// `scratch.applied` (empty if it applies none).
     ///
     /// `proximity` is the bone–object closest-feature query, if the caller
     /// has run it; `detector` runs it when the contact needs it. A contact
@@ -175,8 +176,8 @@ impl Contact {
         object: &ObjectView,
         settings: &LawSettings,
         scratch: &mut patch::PatchScratch,
-        forces: &mut Vec<(Vec3, Vec3)>,
     ) -> bool {
+        scratch.applied.clear();
         let at = self.anchor.site(object, motion);
         let reaction = self.reaction(&at, object, settings);
         let (gamma, mu) = (object.gamma, object.mu);
@@ -226,7 +227,7 @@ impl Contact {
             }
             FrictionState::Static => {}
         }
-        self.spread(motion, object, settings, scratch, forces);
+        self.spread(motion, object, settings, scratch);
         true
     }
 
@@ -262,7 +263,6 @@ impl Contact {
         object: &ObjectView,
         settings: &LawSettings,
         scratch: &mut patch::PatchScratch,
-        forces: &mut Vec<(Vec3, Vec3)>,
     ) {
         let pose = &object.pose;
         let anchor = &self.anchor;
@@ -279,7 +279,7 @@ impl Contact {
             damping: object.damping,
             mu: object.mu,
         };
-        patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples, forces);
+        patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
         self.point = step.center;
         self.normal = step.normal;
     }

@@ -88,20 +88,22 @@ pub(crate) struct PatchStep {
 pub(crate) struct PatchScratch {
     deviations: Vec<Vec3>,
     sample_forces: Vec<Vec3>,
+    /// The last spread's `(force on the object, point)` per sample.
+    pub applied: Vec<(Vec3, Vec3)>,
 }
 
 /// Spreads a contact's force over its skin patch: each sample keeps its
 /// share of the force plus its deviation spring, limited by its own share
 /// of the friction cone (a sample beyond it slips by the slip rule, which
 /// is how a patch slips in torsion). Writes the samples' world points to
-/// `points` and appends `(force on the object, point)` per sample to `out`.
+/// `points` and `(force on the object, point)` per sample to
+/// `scratch.applied`.
 pub(crate) fn spread(
     step: &PatchStep,
     anchor: &mut Anchor,
     object: &ObjectView,
     scratch: &mut PatchScratch,
     points: &mut Vec<Vec3>,
-    out: &mut Vec<(Vec3, Vec3)>,
 ) {
     let pose = &object.pose;
     let (c, n) = (step.center, step.normal);
@@ -129,7 +131,8 @@ pub(crate) fn spread(
         points.push(ci);
     }
     sample_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.sample_forces);
-    out.extend(scratch.sample_forces.iter().copied().zip(points.iter().copied()));
+    let forces = scratch.sample_forces.iter().copied();
+    scratch.applied.extend(forces.zip(points.iter().copied()));
 }
 
 #[cfg(test)]

@@ -245,7 +245,7 @@ impl super::drive::Observer for Watch {
             self.held_height = s.position.y;
             self.contacts_held = world.contacts().len();
         }
-        if done % self.row_every == 0 {
+        if done.is_multiple_of(self.row_every) {
             let count = |state| world.contacts().iter().filter(|c| c.state == state).count();
             let palm = world.hand_pose(self.hand).map_or(Vec3::ZERO, |p| p.palm.center);
             self.timeline.push(TimelineRow {

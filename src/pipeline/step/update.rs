@@ -20,8 +20,6 @@ impl InteractionWorld {
         for mut c in step.candidates.drain(..) {
             let o = c.contact.object.0 as usize;
             let object = self.object_view(o, step.limits[o]);
-            let forces = &mut step.forces[o];
-            let untouched = forces.is_empty();
             let alive = c.contact.update(
                 c.proximity,
                 &step.detector,
@@ -29,11 +27,12 @@ impl InteractionWorld {
                 &object,
                 &settings,
                 &mut step.patch,
-                forces,
             );
-            if untouched && !forces.is_empty() {
+            let forces = &mut step.forces[o];
+            if forces.is_empty() && !step.patch.applied.is_empty() {
                 step.touched.push(o);
             }
+            forces.extend_from_slice(&step.patch.applied);
             if !alive {
                 self.push_event(ContactEventKind::Ended, &c.contact);
                 continue;
