@@ -7,11 +7,14 @@ use std::path::Path;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{file}: {reason}")]
 pub struct FileError {
+    /// The file's path as given, for messages.
     pub file: String,
+    /// What is wrong, and where in the file.
     pub reason: String,
 }
 
 impl FileError {
+    /// An error in `file` for `reason`.
     pub fn new(file: &str, reason: impl Into<String>) -> FileError {
         FileError { file: file.to_string(), reason: reason.into() }
     }

@@ -18,7 +18,8 @@
 //! let mut world = InteractionWorld::new(InteractionConfig::default())?;
 //! world.add_static(&StaticDesc::ground(0.0, 0.5))?;
 //! let size = Vec3::splat(0.05);
-//! let cube = world.add_object(&ObjectDesc::cuboid("cube", size, 0.05, Vec3::new(0.0, 0.025, 0.0)))?;
+//! let at = Vec3::new(0.0, 0.025, 0.0);
+//! let cube = world.add_object(&ObjectDesc::cuboid("cube", size, 0.05, at))?;
 //! let hand = world.add_hand(Side::Right);
 //! let rig = coulomb_hands::hand::rig::HandRig::adult(Side::Right);
 //! let pose = rig.pose(Vec3::new(0.0, 0.3, 0.0), Quat::IDENTITY, [0.0; 5]);

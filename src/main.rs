@@ -320,7 +320,11 @@ fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
             })
         })
         .collect();
-    let summary = serde_json::json!({ "session": file.display().to_string(), "steps": session.steps(), "objects": objects });
+    let summary = serde_json::json!({
+        "session": file.display().to_string(),
+        "steps": session.steps(),
+        "objects": objects
+    });
     if json {
         println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
     } else {
@@ -410,13 +414,9 @@ fn scenario(
         for (r, wall, _) in &reports {
             let failed: Vec<&str> =
                 r.checks.iter().filter(|c| !c.passed).map(|c| c.name.as_str()).collect();
-            println!(
-                "{:<20} {:<6} {:>7.2}  {}",
-                r.name,
-                if r.passed { "pass" } else { "FAIL" },
-                wall,
-                failed.join("; ")
-            );
+            let result = if r.passed { "pass" } else { "FAIL" };
+            let row = format!("{:<20} {result:<6} {wall:>7.2}  {}", r.name, failed.join("; "));
+            println!("{}", row.trim_end());
         }
         let n = reports.iter().filter(|r| r.0.passed).count();
         println!("{n}/{} passed in {:.1} s", reports.len(), started.elapsed().as_secs_f64());

@@ -166,7 +166,7 @@ impl Anchor {
     /// anchors move. The site re-centres under the bone (the overlap follows
     /// whichever of bone and face is smaller); then C moves along the
     /// surface by inverse ray casts, to keep the slip rule's stretch
-    /// (`kinetic`, Coulomb) or, with `kinetic` `None` (Eq. 3.8 as written),
+    /// (`kinetic`, Coulomb) or, with `kinetic` `None` (the thesis's rule),
     /// along the thesis's ray towards the bone. The patch moves with C.
     pub fn slide(
         &mut self,

@@ -10,7 +10,9 @@ use rapier3d::parry::shape::Shape;
 /// A point on the object's surface with its outward normal (world).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SurfacePoint {
+    /// The point on the surface (world, m).
     pub point: Vec3,
+    /// Unit outward surface normal there (world).
     pub normal: Vec3,
 }
 

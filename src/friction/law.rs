@@ -50,7 +50,7 @@ pub fn tangential_friction(
 /// resolved into `f_n` and `f_T`, with its [`FrictionState`].
 ///
 /// A force with `f·n ≤ 0` (the bone is not pressing) yields no force and
-/// [`FrictionState::Separated`]: Eq. 3.8 read literally would keep a pulling
+/// [`FrictionState::Separated`]: the kinetic rule read literally would keep a pulling
 /// normal force and a tangential force, which is adhesion, not friction.
 pub fn resolve(
     f: Vec3,

@@ -23,21 +23,29 @@ impl std::fmt::Display for HandId {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Side {
+    /// The left hand.
     Left,
+    /// The right hand.
     Right,
 }
 
 /// A digit, thumb first.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Finger {
+    /// The thumb.
     Thumb,
+    /// The index finger.
     Index,
+    /// The middle finger.
     Middle,
+    /// The ring finger.
     Ring,
+    /// The little finger.
     Pinky,
 }
 
 impl Finger {
+    /// All five digits, thumb first.
     pub const ALL: [Finger; 5] =
         [Finger::Thumb, Finger::Index, Finger::Middle, Finger::Ring, Finger::Pinky];
 }
@@ -45,19 +53,25 @@ impl Finger {
 /// A phalanx, from the palm outwards.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Phalanx {
+    /// The phalanx next to the palm (the thumb's metacarpal).
     Proximal,
+    /// The middle phalanx (the thumb's proximal phalanx).
     Intermediate,
+    /// The fingertip phalanx.
     Distal,
 }
 
 impl Phalanx {
+    /// All three phalanges, from the palm outwards.
     pub const ALL: [Phalanx; 3] = [Phalanx::Proximal, Phalanx::Intermediate, Phalanx::Distal];
 }
 
 /// One of the 16 bones of a hand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Bone {
+    /// The palm box.
     Palm,
+    /// One phalanx capsule of one finger.
     Finger(Finger, Phalanx),
 }
 
@@ -117,8 +131,11 @@ impl std::fmt::Display for Bone {
 /// Which skin patch size a bone uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SkinClass {
+    /// A phalanx of index … pinky.
     Finger,
+    /// A phalanx of the thumb.
     Thumb,
+    /// The palm.
     Palm,
 }
 
@@ -204,13 +221,16 @@ impl Palm {
 /// The shape of one bone at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum BoneShape {
+    /// The palm's box.
     Palm(Palm),
+    /// A phalanx's capsule.
     Capsule(Capsule),
 }
 
 /// One tracking sample of a whole hand, in world metres.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct HandPose {
+    /// The palm box.
     pub palm: Palm,
     /// `fingers[finger][phalanx]`, thumb first, proximal first.
     pub fingers: [[Capsule; 3]; 5],
@@ -242,20 +262,66 @@ pub const MAX_COORDINATE: f32 = 1.0e4;
 /// Why a hand pose was rejected. Each names the hand and the bone.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PoseError {
+    /// A number of the bone is NaN or infinite.
     #[error("hand {hand}: bone {bone}: {field} is not finite")]
-    NonFinite { hand: u32, bone: Bone, field: &'static str },
+    NonFinite {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The bone.
+        bone: Bone,
+        /// The bone's field, e.g. `center`, `a` or `radius`.
+        field: &'static str,
+    },
+    /// A point of the bone lies beyond [`MAX_COORDINATE`].
     #[error(
         "hand {hand}: bone {bone}: {field} is {value} m from the origin (limit {MAX_COORDINATE} m)"
     )]
-    OutOfRange { hand: u32, bone: Bone, field: &'static str, value: f32 },
+    OutOfRange {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The bone.
+        bone: Bone,
+        /// The point's field: `center`, `a` or `b`.
+        field: &'static str,
+        /// The point's largest absolute coordinate (m).
+        value: f32,
+    },
+    /// A capsule radius is zero or negative.
     #[error("hand {hand}: bone {bone}: radius {radius} m must be positive")]
-    BadRadius { hand: u32, bone: Bone, radius: f32 },
+    BadRadius {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The bone.
+        bone: Bone,
+        /// The capsule radius (m).
+        radius: f32,
+    },
+    /// A capsule shorter than [`MIN_BONE_LENGTH`].
     #[error("hand {hand}: bone {bone}: zero-length bone (joints coincide at {at:?})")]
-    ZeroLength { hand: u32, bone: Bone, at: Vec3 },
+    ZeroLength {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The bone.
+        bone: Bone,
+        /// Where its joints coincide: the joint nearer the palm (world, m).
+        at: Vec3,
+    },
+    /// A palm half extent is zero or negative.
     #[error("hand {hand}: bone palm: half extents {half_extents:?} must all be positive")]
-    BadPalmExtents { hand: u32, half_extents: Vec3 },
+    BadPalmExtents {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The palm's half extents (m).
+        half_extents: Vec3,
+    },
+    /// The palm rotation is not a unit quaternion.
     #[error("hand {hand}: bone palm: rotation {rotation:?} is not a unit quaternion")]
-    BadPalmRotation { hand: u32, rotation: Quat },
+    BadPalmRotation {
+        /// The hand ([`HandId`] number).
+        hand: u32,
+        /// The palm rotation.
+        rotation: Quat,
+    },
 }
 
 /// Shorter bones than this (m) are treated as zero-length.

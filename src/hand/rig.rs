@@ -8,6 +8,7 @@ use glam::{Quat, Vec3};
 /// Bone lengths and radii of a hand, in metres.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HandRig {
+    /// Which hand.
     pub side: Side,
     /// Palm box half extents: half width, half thickness, half length.
     pub palm_half_extents: Vec3,
@@ -27,10 +28,11 @@ pub struct HandRig {
 pub struct Articulation {
     /// Flexion of each finger (thumb first) at its base, middle and end
     /// joint, each in [0, 1] of that joint's full flexion
-    /// ([`HandRig::full_curl`], the thumb's [`HandRig::thumb_full_curl`]). Equal thirds curl a finger as one; the base
-    /// (knuckle) joint alone gives a straight finger bent at the knuckle,
-    /// and knuckle and finger joints together draw the fingertip along a
-    /// line, e.g. stroking a surface it presses on.
+    /// ([`HandRig::full_curl`], the thumb's [`HandRig::thumb_full_curl`]).
+    /// Equal thirds curl a finger as one; the base (knuckle) joint alone
+    /// gives a straight finger bent at the knuckle, and knuckle and finger
+    /// joints together draw the fingertip along a line, e.g. stroking a
+    /// surface it presses on.
     pub flex: [[f32; 3]; 5],
     /// Thumb opposition in [0, 1] ([`HandRig::thumb_direction`]).
     pub opposition: f32,

@@ -40,6 +40,7 @@ impl Default for Conversion {
 }
 
 impl Conversion {
+    /// The conversion that changes nothing.
     pub fn identity() -> Self {
         Conversion { affine: Affine3A::IDENTITY }
     }

@@ -36,10 +36,12 @@ use glam::{Quat, Vec3};
 /// A tracked joint: position (m), orientation and radius (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Joint {
+    /// Joint position (m), in the tracker's frame.
     pub position: Vec3,
     /// The joint frame: −z along the bone towards the fingertip, +y out of
     /// the back of the hand (OpenXR and WebXR convention).
     pub orientation: Quat,
+    /// Joint radius (m): half the finger's thickness there.
     pub radius: f32,
 }
 
@@ -47,34 +49,49 @@ pub struct Joint {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{layout} joint {joint}: {reason}")]
 pub struct LayoutError {
+    /// The layout: `openxr`, `webxr` or `mediapipe`.
     pub layout: &'static str,
+    /// Index of the joint in the layout's order.
     pub joint: usize,
+    /// What is wrong with it.
     pub reason: String,
 }
 
 /// OpenXR `XrHandJointEXT` indices.
 pub mod openxr {
+    /// The palm joint (`XR_HAND_JOINT_PALM_EXT`).
     pub const PALM: usize = 0;
+    /// The wrist joint.
     pub const WRIST: usize = 1;
     /// First joint of each finger (thumb: metacarpal; others: metacarpal).
     pub const THUMB_METACARPAL: usize = 2;
+    /// The index finger's metacarpal; each later finger's starts 5 further on.
     pub const INDEX_METACARPAL: usize = 6;
+    /// Number of joints.
     pub const COUNT: usize = 26;
 }
 
 /// WebXR `XRHandJoint` order (no palm joint).
 pub mod webxr {
+    /// The wrist joint.
     pub const WRIST: usize = 0;
+    /// The thumb's metacarpal joint, its first of four.
     pub const THUMB_METACARPAL: usize = 1;
+    /// The index finger's metacarpal; each later finger's starts 5 further on.
     pub const INDEX_METACARPAL: usize = 5;
+    /// Number of joints.
     pub const COUNT: usize = 25;
 }
 
 /// MediaPipe Hands landmark indices.
 pub mod mediapipe {
+    /// The wrist landmark.
     pub const WRIST: usize = 0;
+    /// The thumb's carpometacarpal joint, its first of four landmarks.
     pub const THUMB_CMC: usize = 1;
+    /// The index finger's knuckle; each later finger's starts 4 further on.
     pub const INDEX_MCP: usize = 5;
+    /// Number of landmarks.
     pub const COUNT: usize = 21;
 }
 

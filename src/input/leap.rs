@@ -23,6 +23,7 @@ pub const DEFAULT_WIDTHS_MM: [f32; 5] = [19.6, 18.7, 18.4, 17.5, 15.5];
 pub struct LeapRecording {
     /// The file it came from, for messages.
     pub source_name: String,
+    /// The file's `metadata.formatVersion`: 0.1, 1 or 2.
     pub format_version: f64,
     /// Frames in file order.
     pub frames: Vec<TrackingFrame>,
@@ -351,7 +352,8 @@ mod tests {
     fn hand_json() -> Value {
         serde_json::json!({
             "id": 7, "type": "right",
-            "palmPosition": [0.0, 200.0, 0.0], "palmNormal": [0.0, -1.0, 0.0], "direction": [0.0, 0.0, -1.0],
+            "palmPosition": [0.0, 200.0, 0.0], "palmNormal": [0.0, -1.0, 0.0],
+            "direction": [0.0, 0.0, -1.0],
             "grabStrength": 0.25, "pinchStrength": 1.0
         })
     }
@@ -368,7 +370,10 @@ mod tests {
     fn recording(version: f64) -> Value {
         serde_json::json!({
             "metadata": { "formatVersion": version },
-            "frames": [{ "timestamp": 1000, "hands": [hand_json()], "pointables": (0..5).map(pointable).collect::<Vec<_>>() }]
+            "frames": [{
+                "timestamp": 1000, "hands": [hand_json()],
+                "pointables": (0..5).map(pointable).collect::<Vec<_>>()
+            }]
         })
     }
 

@@ -19,6 +19,7 @@ use glam::Vec3;
 pub struct TrackedHand {
     /// The tracker's id for this hand; stable while it stays tracked.
     pub id: i64,
+    /// Which hand.
     pub side: Side,
     /// Centre of the palm surface.
     pub palm_position: Vec3,
@@ -62,12 +63,16 @@ impl TrackedHand {
 pub struct TrackingFrame {
     /// Tracker timestamp (µs).
     pub timestamp_us: i64,
+    /// The hands tracked in this frame.
     pub hands: Vec<TrackedHand>,
 }
 
 /// A problem with tracking input, located as precisely as possible.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{source_name}{}: {field}: {reason}", frame.map(|f| format!(": frame {f}")).unwrap_or_default())]
+#[error(
+    "{source_name}{}: {field}: {reason}",
+    frame.map(|f| format!(": frame {f}")).unwrap_or_default()
+)]
 pub struct InputError {
     /// The file or stream the data came from.
     pub source_name: String,
@@ -75,5 +80,6 @@ pub struct InputError {
     pub frame: Option<usize>,
     /// The field (a JSON path such as `hands[0].palmPosition`).
     pub field: String,
+    /// What is wrong with it.
     pub reason: String,
 }

@@ -9,7 +9,9 @@ use glam::Vec3;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("hand {hand}: {reason}")]
 pub struct SkeletonError {
+    /// The tracker's id of the hand ([`TrackedHand::id`]).
     pub hand: i64,
+    /// What is wrong with it.
     pub reason: String,
 }
 

@@ -104,8 +104,11 @@ pub struct ConfigError {
 }
 
 impl InteractionConfig {
-    /// Eq. 3.8 as written and the safeguards off: pure spring, no force cap,
-    /// no penetration-speed limit.
+    /// The thesis's kinetic rule as written and the safeguards off: pure
+    /// spring, no force cap, no penetration-speed limit. Still not the
+    /// thesis exactly: `p` is the bone's surface point, contacts begin and
+    /// end at two offsets, and the patch's deviation springs and slip
+    /// re-centring stay on.
     pub fn thesis() -> Self {
         InteractionConfig {
             kinetic: KineticFriction::Thesis,

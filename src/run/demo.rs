@@ -61,33 +61,49 @@ pub struct GraspReport {
     pub final_height: f32,
     /// Hand contacts when the carry ended and after release.
     pub contacts_held: usize,
+    /// Hand contacts at the end of the run, after release.
     pub contacts_after_release: usize,
     /// Maximum cube speed over the run (m/s).
     pub max_speed: f32,
+    /// The printed rows, one per row interval.
     pub timeline: Vec<TimelineRow>,
 }
 
 /// One printed row of the demo.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct TimelineRow {
+    /// Time (s).
     pub t: f32,
+    /// The script's phase ([`GraspLiftCarry::phase`]).
     pub phase: &'static str,
+    /// Palm centre (world, m).
     pub palm: [f32; 3],
+    /// Cube position (world, m).
     pub cube: [f32; 3],
+    /// Cube speed (m/s).
     pub cube_speed: f32,
+    /// Hand contacts in the static state (inside the friction cone).
     pub contacts_static: usize,
+    /// Hand contacts in the dynamic state (slipping).
     pub contacts_dynamic: usize,
+    /// Hand contacts in the separated state (not pressing, no force).
     pub contacts_separated: usize,
+    /// Magnitude of the hand contacts' total force on the cube (N).
     pub hand_force: f32,
+    /// Contact-began events since the previous row.
     pub began: usize,
+    /// Contact-ended events since the previous row.
     pub ended: usize,
 }
 
 /// The headless demo and acceptance scene: thumb plus four fingers grasp a
 /// 5 cm, 50 g wooden cube, lift it 20 cm, turn the hand 90° and open.
 pub struct GraspLiftCarry {
+    /// The world: ground, cube and hand.
     pub world: InteractionWorld,
+    /// The scripted right hand.
     pub hand: HandId,
+    /// The cube.
     pub cube: ObjectId,
     /// Half size of the cube (m).
     pub half: f32,
@@ -96,16 +112,23 @@ pub struct GraspLiftCarry {
 impl GraspLiftCarry {
     /// Phase boundaries (s).
     pub const CLOSE: (f32, f32) = (0.5, 1.0);
+    /// Start and end of the lift (s).
     pub const LIFT: (f32, f32) = (1.3, 2.3);
+    /// Start and end of the turn (s).
     pub const TURN: (f32, f32) = (2.3, 3.3);
+    /// Start and end of the hand opening (s).
     pub const OPEN: (f32, f32) = (3.8, 4.3);
+    /// End of the run (s).
     pub const END: f32 = 5.0;
     /// How far the hand lifts (m) and turns (rad, about +z).
     pub const LIFT_HEIGHT: f32 = 0.2;
+    /// How far the hand turns about world +z (rad).
     pub const TURN_ANGLE: f32 = std::f32::consts::FRAC_PI_2;
     /// How deep each distal pad sinks into the cube when closed (m).
     pub const SQUEEZE: f32 = 0.004;
 
+    /// Builds the scene: a 5 cm, 50 g wooden cube at the origin resting on the
+    /// ground (friction 0.5), and a right hand.
     pub fn new(config: InteractionConfig) -> Result<Self, WorldError> {
         let half = 0.025;
         let mut world = InteractionWorld::new(config)?;
@@ -120,6 +143,7 @@ impl GraspLiftCarry {
         Ok(GraspLiftCarry { world, hand, cube, half })
     }
 
+    /// Name of the script's phase at `t` (s), e.g. `lift`.
     pub fn phase(t: f32) -> &'static str {
         match t {
             t if t < Self::CLOSE.0 => "approach",

@@ -19,7 +19,7 @@ pub mod observe;
 pub mod replay;
 pub mod scenario;
 
-use crate::FileError;
+use crate::file_error::FileError;
 use crate::input::InputError;
 use crate::output::SessionError;
 use crate::pipeline::WorldError;

@@ -5,15 +5,17 @@
 //!   "statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.4, 0.02, 0.3]}},
 //!                "position": [0.0, 0.1, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "friction": 0.5}],
 //!   "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
-//!                "mass": 0.05, "material": {"name": "wood", "skin": {"static_mu": 0.46, "dynamic_mu": 0.46},
-//!                "surface_friction": 0.5, "source": "table"},
+//!                "mass": 0.05,
+//!                "material": {"name": "wood", "skin": {"static_mu": 0.46, "dynamic_mu": 0.46},
+//!                             "surface_friction": 0.5, "source": "table"},
 //!                "position": [0.0, 0.2, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "gamma": null}]
 //! }
 //! ```
 //!
 //! A mesh shape loads a file (OBJ, STL, glTF, GLB) relative to the scene file:
-//! `{"Mesh": {"file": "../assets/meshes/pawn.obj", "scale": 1.0, "body": {"Voxels": {"size": 0.004}}}}`,
-//! with body `{"ConvexParts": {"concavity": 0.01}}` or, for statics only, `"TriMesh"`.
+//! `{"Mesh": {"file": "../assets/meshes/pawn.obj", "scale": 1.0,
+//! "body": {"Voxels": {"size": 0.004}}}}`, with body `{"ConvexParts": {"concavity": 0.01}}`
+//! or, for statics only, `"TriMesh"`.
 //!
 //! Optional: `"ground": {"height": 0.0, "friction": 0.5}`, `"gravity": [0.0, -9.81, 0.0]`
 //! and `"towers": [{"base": [x, y, z]}]` (54 blocks each, see
@@ -98,7 +100,7 @@ pub struct Scene {
 }
 
 /// Why a scene file was rejected; names the file and where.
-pub type SceneError = crate::FileError;
+pub type SceneError = crate::file_error::FileError;
 
 impl Scene {
     /// Reads and checks a scene file: JSON syntax, known fields, material
@@ -246,8 +248,13 @@ mod tests {
             Scene::parse_in(
                 "s.json",
                 &format!(
-                    r#"{{"objects": [{{"name": "pawn", "mass": 0.03, "material": "wood", "position": [0, 0, 0],
+                    concat!(
+                        r#"{{"objects": [{{"name": "pawn", "mass": 0.03, "material": "wood", "#,
+                        r#""position": [0, 0, 0],
                         "shape": {{"Mesh": {{"file": "{file}", "body": {body}}}}}}}]}}"#
+                    ),
+                    file = file,
+                    body = body
                 ),
                 &dir,
             )

@@ -46,8 +46,8 @@ const TABLE: &[Row] = &[
         static_mu: 0.9,
         dynamic_mu: 0.9,
         surface_friction: 0.9,
-        source: "0.9: finger pad sliding on rubber hoses, Seo et al. 2009, Ergonomics 52(5):609-616 \
-                 (sliding only; static set equal)",
+        source: "0.9: finger pad sliding on rubber hoses, Seo et al. 2009, \
+                 Ergonomics 52(5):609-616 (sliding only; static set equal)",
     },
     Row {
         name: "vinyl",

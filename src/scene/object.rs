@@ -21,19 +21,26 @@ impl std::fmt::Display for ObjectId {
 pub enum ShapeDesc {
     /// A box with the given half extents.
     Box {
+        /// Half extents along local x, y and z (m).
         half_extents: Vec3,
     },
+    /// A sphere about the local origin.
     Sphere {
+        /// Radius (m).
         radius: f32,
     },
     /// A capsule along local y.
     Capsule {
+        /// Half the length of the axis segment, without the caps (m).
         half_height: f32,
+        /// Radius (m).
         radius: f32,
     },
     /// A cylinder along local y.
     Cylinder {
+        /// Half the height (m).
         half_height: f32,
+        /// Radius (m).
         radius: f32,
     },
     /// Several convex parts rigidly joined, e.g. an axe's handle and head.
@@ -51,6 +58,7 @@ pub struct MeshShape {
     /// Multiplies the file's coordinates (e.g. 0.001 for millimetres).
     #[serde(default = "unit_scale")]
     pub scale: f32,
+    /// How the mesh becomes a collider.
     pub body: MeshBody,
     /// The file's triangles, filled in when a scene is loaded (and kept in
     /// session files, so a replay needs no mesh files).
@@ -69,10 +77,16 @@ pub enum MeshBody {
     /// Boxes of side `size` (m) filling the solid, as the thesis voxelizes
     /// concave objects; smaller voxels follow the shape more closely and
     /// cost more contacts queries.
-    Voxels { size: f32 },
+    Voxels {
+        /// Side of each voxel box (m).
+        size: f32,
+    },
     /// Convex parts by V-HACD; `concavity` (0..1, e.g. 0.01) is the
     /// largest deviation each part may have from the mesh.
-    ConvexParts { concavity: f32 },
+    ConvexParts {
+        /// V-HACD's concavity limit, in (0, 1].
+        concavity: f32,
+    },
     /// The exact triangles: only for static scenery, since a triangle mesh
     /// has no inside to give a dynamic body its mass.
     TriMesh,
@@ -140,8 +154,11 @@ impl MeshShape {
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Part {
+    /// The part's position in the object's local frame (m).
     pub position: Vec3,
+    /// The part's orientation in the object's local frame (unit quaternion).
     pub rotation: Quat,
+    /// The part's shape, a primitive in its own frame.
     pub shape: ShapeDesc,
 }
 
@@ -165,12 +182,15 @@ impl Default for GammaMode {
 pub struct ObjectDesc {
     /// A name for messages and outputs.
     pub name: String,
+    /// Collision shape, in the object's local frame.
     pub shape: ShapeDesc,
     /// Mass in kg.
     pub mass: f32,
+    /// Surface material: friction against skin and other objects.
     pub material: Material,
     /// World position of the body origin (m).
     pub position: Vec3,
+    /// World orientation (unit quaternion).
     pub rotation: Quat,
     /// Overrides the world's γ mode for this object.
     pub gamma: Option<GammaMode>,
@@ -207,8 +227,11 @@ impl ObjectDesc {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("object '{object}': {field}: {reason}")]
 pub struct ObjectError {
+    /// The object's or scenery's name.
     pub object: String,
+    /// The field, e.g. `mass` or `shape.radius`.
     pub field: String,
+    /// What is wrong with it.
     pub reason: String,
 }
 
@@ -321,7 +344,8 @@ impl ObjectDesc {
             return Err(ObjectError::new(
                 name,
                 "shape.Mesh.body",
-                "a triangle mesh has no inside, so it can only be static scenery: use Voxels or ConvexParts",
+                "a triangle mesh has no inside, so it can only be static scenery: use \
+                 Voxels or ConvexParts",
             ));
         }
         self.shape.build(name, "shape")
@@ -332,9 +356,13 @@ impl ObjectDesc {
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct StaticDesc {
+    /// A name for messages and outputs.
     pub name: String,
+    /// Collision shape, in the scenery's local frame.
     pub shape: ShapeDesc,
+    /// World position of the body origin (m).
     pub position: Vec3,
+    /// World orientation (unit quaternion).
     pub rotation: Quat,
     /// Object–object friction coefficient for rapier.
     pub friction: f32,

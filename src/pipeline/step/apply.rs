@@ -7,8 +7,9 @@ use crate::pipeline::InteractionWorld;
 impl InteractionWorld {
     /// Applies every sample force at its point with rapier's
     /// `add_force_at_point`, skipping any that is not finite, and keeps
-    /// each touched object's total hand force (Eq. 3.10: the samples of a
-    /// contact share its force exactly, so their sum is the contacts' sum).
+    /// each touched object's total hand force ([`friction::total_force`]:
+    /// the samples of a contact share its force exactly, so their sum is
+    /// the contacts' sum).
     pub(super) fn apply_forces(&mut self, step: &StepScratch) {
         for &o in &step.touched {
             let slot = &mut self.objects[o];

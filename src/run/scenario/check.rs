@@ -11,10 +11,14 @@ use glam::{Quat, Vec3};
 #[derive(Debug, Clone, PartialEq, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Check {
+    /// The check's name, for the report.
     pub name: String,
+    /// What is measured.
     pub measure: Measure,
+    /// Lower bound, if any.
     #[serde(default)]
     pub min: Option<f32>,
+    /// Upper bound, if any.
     #[serde(default)]
     pub max: Option<f32>,
 }
@@ -26,40 +30,116 @@ pub struct Check {
 pub enum Measure {
     /// How far the object moved from `from` to `to` (m): along the unit
     /// `axis` if given (signed), else the distance.
-    Displacement { object: String, from: f32, to: Option<f32>, axis: Option<Vec3> },
+    Displacement {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+        /// Unit axis (world) to measure along, if any.
+        axis: Option<Vec3>,
+    },
     /// The object's height (y) at `at` (m).
-    Height { object: String, at: f32 },
+    Height {
+        /// The object's name in the scene.
+        object: String,
+        /// Time (s).
+        at: f32,
+    },
     /// The object's lowest height over [`from`, `to`] (m).
-    MinHeight { object: String, from: f32, to: Option<f32> },
+    MinHeight {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+    },
     /// The largest distance of the object from where it was at `from`, in
     /// the palm frame of hand `hand` (index in the file), over
     /// [`from`, `to`] (m): how much it moved in the hand.
-    DriftInHand { object: String, hand: usize, from: f32, to: Option<f32> },
+    DriftInHand {
+        /// The object's name in the scene.
+        object: String,
+        /// Index of the hand in the scenario file.
+        hand: usize,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+    },
     /// The largest angle by which the object turned in the palm frame of
     /// hand `hand` since `from`, over [`from`, `to`] (degrees).
-    TurnInHand { object: String, hand: usize, from: f32, to: Option<f32> },
+    TurnInHand {
+        /// The object's name in the scene.
+        object: String,
+        /// Index of the hand in the scenario file.
+        hand: usize,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+    },
     /// The object's rotation from `from` to `to` (degrees): about the unit
     /// world `axis` if given (signed, right-handed), else the whole angle.
-    Rotation { object: String, from: f32, to: Option<f32>, axis: Option<Vec3> },
+    Rotation {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+        /// Unit axis (world) to measure the turn about, if any.
+        axis: Option<Vec3>,
+    },
     /// The angle between the object's local +y axis and world up at `at`
     /// (degrees).
-    Tilt { object: String, at: f32 },
+    Tilt {
+        /// The object's name in the scene.
+        object: String,
+        /// Time (s).
+        at: f32,
+    },
     /// The object's speed at `at` (m/s).
-    Speed { object: String, at: f32 },
+    Speed {
+        /// The object's name in the scene.
+        object: String,
+        /// Time (s).
+        at: f32,
+    },
     /// The largest displacement from `from` to `to` among the objects whose
     /// name starts with `prefix`, except those in `except` (m).
     GroupDisplacement {
+        /// The start of the group's object names.
         prefix: String,
+        /// Names of objects left out of the group.
         #[serde(default)]
         except: Vec<String>,
+        /// Start time (s).
         from: f32,
+        /// End time (s); `None` is the end of the run.
         to: Option<f32>,
     },
     /// The largest horizontal distance of the object's centre from the
     /// polyline through `path` ([x, z] points, m) over [`from`, `to`] (m).
-    PathDeviation { object: String, path: Vec<[f32; 2]>, from: f32, to: Option<f32> },
+    PathDeviation {
+        /// The object's name in the scene.
+        object: String,
+        /// The polyline's points, `[x, z]` (world, m).
+        path: Vec<[f32; 2]>,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+    },
     /// Hand contacts on the object at `at`.
-    Contacts { object: String, at: f32 },
+    Contacts {
+        /// The object's name in the scene.
+        object: String,
+        /// Time (s).
+        at: f32,
+    },
 }
 
 /// What a run recorded, step by step, for the checks.
@@ -67,10 +147,13 @@ pub enum Measure {
 pub struct History {
     /// Physics step (s).
     pub dt: f32,
+    /// Object names, in object order.
     pub names: Vec<String>,
     /// `poses[step][object]` after that step.
     pub poses: Vec<Vec<(Vec3, Quat)>>,
+    /// `speeds[step][object]`: speed after that step (m/s).
     pub speeds: Vec<Vec<f32>>,
+    /// `contacts[step][object]`: hand contacts on it after that step.
     pub contacts: Vec<Vec<u32>>,
     /// `palms[step][hand]`: palm centre and rotation, if tracked.
     pub palms: Vec<Vec<Option<(Vec3, Quat)>>>,
@@ -117,10 +200,13 @@ pub enum CheckError {
 /// The outcome of one check.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct CheckResult {
+    /// The check's name.
     pub name: String,
+    /// The measured value, in the measure's unit.
     pub value: f32,
     /// The bound as text, e.g. `>= 0.05` or `<= 0.01`.
     pub bound: String,
+    /// Whether the value is finite and within the bound.
     pub passed: bool,
 }
 

@@ -42,7 +42,7 @@ pub mod script;
 
 use super::RunError;
 use super::drive::{self, Driver, HandSource, Observer, RecordedHand};
-use crate::FileError;
+use crate::file_error::FileError;
 use crate::hand::Side;
 use crate::hand::rig::HandRig;
 use crate::input::convert::Conversion;
@@ -349,14 +349,20 @@ mod tests {
 
     #[test]
     fn bad_files_are_rejected_before_a_run_naming_the_place() {
-        let base = r#"{"name": "x", "duration": 1.0, "scene": {"objects": [{"name": "box",
-            "shape": {"Sphere": {"radius": 0.02}}, "mass": 0.1, "material": "wood", "position": [0, 0.1, 0]}]},
+        let base = concat!(
+            r#"{"name": "x", "duration": 1.0, "scene": {"objects": [{"name": "box",
+            "shape": {"Sphere": {"radius": 0.02}}, "mass": 0.1, "material": "wood", "#,
+            r#""position": [0, 0.1, 0]}]},
             "hands": [{"side": "right", "keys": [{"t": 0.0, "palm": [0, 0.3, 0]}]}],
-            "checks": [CHECK]}"#;
+            "checks": [CHECK]}"#
+        );
         let parse = |check: &str| {
             Scenario::parse("x.json", &base.replace("CHECK", check), Path::new(".")).map(|_| ())
         };
-        let ok = r#"{"name": "h", "measure": {"kind": "height", "object": "box", "at": 0.5}, "min": 0.0}"#;
+        let ok = concat!(
+            r#"{"name": "h", "measure": {"kind": "height", "object": "box", "at": 0.5}, "#,
+            r#""min": 0.0}"#
+        );
         parse(ok).unwrap();
         let e = parse(&ok.replace("\"box\"", "\"bxo\"")).unwrap_err().to_string();
         assert!(e.contains("x.json") && e.contains("checks[0] 'h'") && e.contains("'bxo'"), "{e}");

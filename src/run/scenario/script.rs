@@ -15,7 +15,10 @@ pub fn smoothstep(t0: f32, t1: f32, t: f32) -> f32 {
 
 /// A bad keyframe: which key, which field, and why.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("keys{}: {reason}", match key { Some(k) => format!("[{k}].{field}"), None => String::new() })]
+#[error(
+    "keys{}: {reason}",
+    match key { Some(k) => format!("[{k}].{field}"), None => String::new() }
+)]
 pub struct KeyError {
     /// The key's index, or `None` for the list as a whole.
     pub key: Option<usize>,
@@ -30,7 +33,9 @@ pub struct KeyError {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize)]
 #[serde(untagged)]
 pub enum Curl {
+    /// One flexion for all five fingers.
     All(f32),
+    /// One flexion per finger, thumb first.
     Each([f32; 5]),
 }
 
@@ -67,6 +72,8 @@ pub struct Key {
     /// along +z, a right thumb towards −x.
     #[serde(default)]
     pub rotation_deg: Vec3,
+    /// Finger flexion in [0, 1], one or five: every joint, or only the two
+    /// outer joints when `knuckle` is given. Absent: straight fingers.
     #[serde(default)]
     pub curl: Curl,
     /// Flexion of each finger's base joint (knuckle; the thumb's
@@ -106,7 +113,9 @@ impl Key {
 /// and after the last, the hand holds still.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Script {
+    /// The hand that is posed.
     pub rig: HandRig,
+    /// The keyframes, in increasing time.
     pub keys: Vec<Key>,
 }
 

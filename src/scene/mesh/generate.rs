@@ -212,7 +212,8 @@ fn gltf_json(mesh: &TriangleMesh, translation: Vec3, uri: Option<String>) -> ser
         "accessors": [
             {"bufferView": 0, "componentType": 5126, "count": mesh.vertices.len(), "type": "VEC3",
              "min": lo.to_array(), "max": hi.to_array()},
-            {"bufferView": 1, "componentType": 5125, "count": mesh.triangles.len() * 3, "type": "SCALAR"}
+            {"bufferView": 1, "componentType": 5125, "count": mesh.triangles.len() * 3,
+             "type": "SCALAR"}
         ]
     })
 }

@@ -22,7 +22,7 @@ pub struct TriangleMesh {
 }
 
 /// Why a mesh file was rejected: the file, and its [`MeshProblem`].
-pub type MeshError = crate::FileError;
+pub type MeshError = crate::file_error::FileError;
 
 /// What is wrong with a mesh, or with making a body of it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
