@@ -53,17 +53,15 @@ fn a_still_finger_only_takes_energy_out_of_a_box_spinning_under_it() {
     for (static_mu, dynamic_mu) in [(0.38, 0.6), (0.46, 0.46)] {
         for spin in [0.6, 1.5, 4.0] {
             let (kicked, most, turned) = spin_under_a_still_finger(static_mu, dynamic_mu, spin);
+            let case = format!("μ {static_mu}/{dynamic_mu}, {spin} rad/s");
             assert!(
                 most <= kicked * 1.001,
-                "μ {static_mu}/{dynamic_mu}, {spin} rad/s: kinetic energy rose from {kicked:.3e} J to {most:.3e} J"
+                "{case}: kinetic energy rose from {kicked:.3e} J to {most:.3e} J"
             );
             if spin == 4.0 {
                 // The patch holds a twist of μ_st·f_n/γ at its 4 mm radius,
                 // 14–17° here: turning farther means its samples slipped.
-                assert!(
-                    turned > 20.0,
-                    "μ {static_mu}/{dynamic_mu}: the box only turned {turned:.1}°, so nothing slipped"
-                );
+                assert!(turned > 20.0, "{case}: the box only turned {turned:.1}°, nothing slipped");
             }
         }
     }

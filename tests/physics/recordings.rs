@@ -282,7 +282,8 @@ fn a_scene_file_puts_objects_in_the_replay() {
     let scene = Scene::parse(
         "table.json",
         r#"{"statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.3, 0.02, 0.3]}},
-                          "position": [0.0, 0.08, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0], "friction": 0.5}],
+                          "position": [0.0, 0.08, 0.0], "rotation": [0.0, 0.0, 0.0, 1.0],
+                          "friction": 0.5}],
             "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
                           "mass": 0.05, "material": "wood", "position": [0.0, 0.125, 0.0]}]}"#,
     )

@@ -69,7 +69,8 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     let slide = variant("slide-slippery", r#""friction": 0.05}"#, r#""friction": 1.5}"#);
     assert!(!slide.passed, "{}", table(&slide));
     // A cube too slippery for the pinch's squeeze: it stays on the floor.
-    let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05}, "surface_friction": 0.5, "source": "test"}"#;
+    let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05},
+                       "surface_friction": 0.5, "source": "test"}"#;
     let grasp =
         variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
     assert!(!check(&grasp, "lifted").passed, "{}", table(&grasp));
@@ -86,7 +87,8 @@ fn without_the_physics_they_rely_on_the_scenarios_fail() {
     // friction holds it against the middle finger's push. A slicker cross
     // (μ 0.2) is still lifted, and the first push still turns it, but the
     // pivots let it go under the pushes: it is dropped.
-    let slick = r#"{"name": "slick", "skin": {"static_mu": 0.2, "dynamic_mu": 0.2}, "surface_friction": 0.5, "source": "test"}"#;
+    let slick = r#"{"name": "slick", "skin": {"static_mu": 0.2, "dynamic_mu": 0.2},
+                    "surface_friction": 0.5, "source": "test"}"#;
     let pushed_out =
         variant("spin-one-hand", r#""material": "wood""#, &format!(r#""material": {slick}"#));
     assert!(!check(&pushed_out, "lowest").passed, "{}", table(&pushed_out));
@@ -116,13 +118,17 @@ fn a_scenario_hand_may_replay_a_recording() {
     // table (as in `replay --scene`), now as a scenario with a check.
     let text = r#"{
       "name": "claps", "duration": 3.0,
-      "scene": {"statics": [{"name": "table", "shape": {"Box": {"half_extents": [0.3, 0.02, 0.3]}},
-                             "position": [0.0, 0.08, 0.0], "rotation": [0, 0, 0, 1], "friction": 0.5}],
-                "objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
+      "scene": {"statics": [{"name": "table",
+                             "shape": {"Box": {"half_extents": [0.3, 0.02, 0.3]}},
+                             "position": [0.0, 0.08, 0.0], "rotation": [0, 0, 0, 1],
+                             "friction": 0.5}],
+                "objects": [{"name": "cube",
+                             "shape": {"Box": {"half_extents": [0.025, 0.025, 0.025]}},
                              "mass": 0.05, "material": "wood", "position": [0.0, 0.125, 0.0]}]},
       "hands": [{"recording": "../data/leap/three-claps.json.lz", "side": "left"},
                 {"recording": "../data/leap/three-claps.json.lz", "side": "right"}],
-      "checks": [{"name": "knocked (m)", "measure": {"kind": "displacement", "object": "cube", "from": 0.0}, "min": 0.005}]
+      "checks": [{"name": "knocked (m)", "min": 0.005,
+                  "measure": {"kind": "displacement", "object": "cube", "from": 0.0}}]
     }"#;
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
     let s = Scenario::parse("claps.json", text, &dir).unwrap();
