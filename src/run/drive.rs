@@ -132,6 +132,13 @@ pub trait Observer {
         Ok(())
     }
 
+    /// Between the step's halves: hand forces are set and rapier has not
+    /// moved anything yet (as between MuJoCo's `mj_step1` and `mj_step2`).
+    /// Forces added to bodies here act in this step.
+    fn after_hand_forces(&mut self, _world: &mut InteractionWorld) -> Result<(), RunError> {
+        Ok(())
+    }
+
     /// After each step.
     fn after_step(&mut self, _step: &StepView) -> Result<(), RunError> {
         Ok(())
@@ -213,8 +220,9 @@ impl<'w, 's> Driver<'w, 's> {
 
     /// Runs up to `steps` steps; stops early, before a step, once every
     /// source has finished. Each step: observers' `before_step`, every
-    /// source sampled and its hand posed or cleared, the world's step, then
-    /// observers' `after_step`. Returns the steps run.
+    /// source sampled and its hand posed or cleared, the hand forces,
+    /// observers' `after_hand_forces`, rapier's step, then observers'
+    /// `after_step`. Returns the steps run.
     pub fn run(
         &mut self,
         steps: usize,
@@ -235,7 +243,11 @@ impl<'w, 's> Driver<'w, 's> {
             if !self.sources.is_empty() && self.sources.iter().all(|s| s.finished()) {
                 return Ok(i);
             }
-            self.world.step();
+            self.world.apply_hand_forces();
+            for o in observers.iter_mut() {
+                o.after_hand_forces(self.world)?;
+            }
+            self.world.step_physics();
             self.steps += 1;
             let view = StepView {
                 world: self.world,

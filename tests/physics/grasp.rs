@@ -35,9 +35,31 @@ fn replays_are_bit_for_bit_deterministic() {
     }
 }
 
+/// Unlocks a fixture on `object` at the first step that starts at or after
+/// `at` (s).
+struct Unlock {
+    object: coulomb_hands::ObjectId,
+    at: f64,
+}
+
+impl coulomb_hands::run::drive::Observer for Unlock {
+    fn before_step(
+        &mut self,
+        world: &mut coulomb_hands::InteractionWorld,
+        t: f64,
+    ) -> Result<(), coulomb_hands::RunError> {
+        if t >= self.at && t < self.at + world.config().dt as f64 {
+            world.set_object_locked(self.object, false)?;
+        }
+        Ok(())
+    }
+}
+
 #[test]
 fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     use coulomb_hands::output::session::{Session, object_states};
+    use coulomb_hands::run::drive::{Driver, PoseFn, StepView};
+
     use coulomb_hands::{InteractionWorld, ObjectDesc, Side, StaticDesc};
     use glam::Vec3;
     // Record the grasp-lift-carry script, including a fixture on the cube
@@ -53,15 +75,16 @@ fn a_recorded_session_replays_bit_for_bit_from_its_file() {
     world.set_object_locked(cube, true).unwrap();
     let dt = world.config().dt;
     let mut live = Vec::new();
-    for i in 0..(GraspLiftCarry::OPEN.0 / dt) as usize {
-        let t = i as f32 * dt;
-        if i == (GraspLiftCarry::CLOSE.1 / dt) as usize {
-            world.set_object_locked(cube, false).unwrap();
-        }
-        world.set_hand_pose(hand, &script.hand_pose(t)).unwrap();
-        world.step();
-        live.push(object_states(&world));
-    }
+    let mut fixture = Unlock { object: cube, at: GraspLiftCarry::CLOSE.1 as f64 };
+    let mut states = |step: &StepView| {
+        live.push(object_states(step.world));
+        Ok(())
+    };
+    let mut driver = Driver::new(&mut world);
+    let pose = |t: f64| Some(script.hand_pose(t as f32));
+    driver.drive(hand, PoseFn::new(Side::Right, pose)).unwrap();
+    let steps = (GraspLiftCarry::OPEN.0 / dt) as usize;
+    driver.run(steps, &mut [&mut fixture, &mut states]).unwrap();
     assert!(
         world.object_state(cube).unwrap().position.y > 0.15,
         "the recorded run lifted the cube"

@@ -14,7 +14,7 @@ mod scenarios;
 mod tilt;
 
 use coulomb_hands::hand::rig::HandRig;
-use coulomb_hands::run::drive::{Driver, PoseFn, StepView};
+pub use coulomb_hands::run::drive::{Driver, PoseFn, StepView};
 use coulomb_hands::{Bone, Capsule, HandId, HandPose, InteractionWorld, Material, ObjectId, Side};
 use glam::{Quat, Vec3};
 

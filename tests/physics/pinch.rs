@@ -2,7 +2,8 @@
 
 use super::*;
 use coulomb_hands::contact::patch::PatchConfig;
-use coulomb_hands::{Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx};
+use coulomb_hands::run::drive::Observer;
+use coulomb_hands::{Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx, RunError};
 
 const HALF: f32 = 0.02; // 4 cm box
 const MASS: f32 = 0.05;
@@ -52,21 +53,31 @@ impl Pinch {
     fn hold_after(&mut self, settle: f32, seconds: f32) -> f32 {
         let dt = self.world.config().dt;
         let settle_steps = (settle / dt).round() as usize;
-        let mut start = position(&self.world, self.box_id).y;
+        let box_id = self.box_id;
+        let mut start = position(&self.world, box_id).y;
         let mut drop = 0.0f32;
-        for i in 0..((settle + seconds) / dt).round() as usize {
-            if i == settle_steps {
-                start = position(&self.world, self.box_id).y;
+        let mut watch = |step: &StepView| {
+            let y = position(step.world, box_id).y;
+            if step.index + 1 == settle_steps {
+                start = y;
             }
-            for (hand, pose) in self.hands.iter().zip(&self.poses) {
-                self.world.set_hand_pose(*hand, pose).unwrap();
+            if step.index + 1 > settle_steps {
+                drop = drop.max(start - y);
             }
-            self.world.step();
-            if i >= settle_steps {
-                drop = drop.max(start - position(&self.world, self.box_id).y);
-            }
-        }
+            Ok(())
+        };
+        self.drive(((settle + seconds) / dt).round() as usize, &mut [&mut watch]);
         drop
+    }
+
+    /// Holds both hands still for `steps` steps, through the driver.
+    fn drive(&mut self, steps: usize, observers: &mut [&mut dyn Observer]) {
+        let mut driver = Driver::new(&mut self.world);
+        for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+            let pose = &self.poses[i];
+            driver.drive(self.hands[i], PoseFn::new(side, |_| Some(pose.clone()))).unwrap();
+        }
+        driver.run(steps, observers).unwrap();
     }
 }
 
@@ -178,6 +189,27 @@ fn one_or_nine_samples_give_the_same_total_force() {
     }
 }
 
+/// Twists the box about x with 2 mN·m from outside, between the hand
+/// forces and rapier's step, and adds up the angle it turns (rad).
+struct Twister {
+    object: ObjectId,
+    turned: f32,
+}
+
+impl Observer for Twister {
+    fn after_hand_forces(&mut self, world: &mut InteractionWorld) -> Result<(), RunError> {
+        let body = world.object_body(self.object).unwrap();
+        world.physics_mut().bodies[body].add_torque(Vec3::new(0.002, 0.0, 0.0), true);
+        Ok(())
+    }
+
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let dt = step.world.config().dt;
+        self.turned += step.world.object_state(self.object).unwrap().angvel.x * dt;
+        Ok(())
+    }
+}
+
 #[test]
 fn nine_samples_resist_twisting_that_one_sample_does_not() {
     // No gravity: only an external twist about the pinch axis (x).
@@ -188,20 +220,11 @@ fn nine_samples_resist_twisting_that_one_sample_does_not() {
             ..InteractionConfig::default()
         };
         let mut p = pinch(config, 0.003);
-        let body = p.world.object_body(p.box_id).unwrap();
         let dt = p.world.config().dt;
         // The turned angle, accumulated so full turns count.
-        let mut turned = 0.0f32;
-        for _ in 0..(0.5 / dt) as usize {
-            for (hand, pose) in p.hands.iter().zip(&p.poses) {
-                p.world.set_hand_pose(*hand, pose).unwrap();
-            }
-            p.world.apply_hand_forces();
-            p.world.physics_mut().bodies[body].add_torque(Vec3::new(0.002, 0.0, 0.0), true);
-            p.world.step_physics();
-            turned += p.world.object_state(p.box_id).unwrap().angvel.x * dt;
-        }
-        turned.to_degrees()
+        let mut twister = Twister { object: p.box_id, turned: 0.0 };
+        p.drive((0.5 / dt) as usize, &mut [&mut twister]);
+        twister.turned.to_degrees()
     };
     let (one, nine) = (twist(1), twist(9));
     // The patch's twist stiffness: 8 ring samples of γ/9 at the finger

@@ -32,30 +32,33 @@ fn slide_angle(material: Material) -> (f32, f32) {
     let dt = world.config().dt;
     let mut rest: Option<Vec3> = None;
     let mut first_dynamic = None;
-    for i in 0..((40.0 / DEG_PER_S) / dt) as usize {
-        let t = i as f32 * dt;
-        let pose = pose_at(t);
-        world.set_hand_pose(hand, &pose).unwrap();
-        world.step();
-        let tilt = DEG_PER_S * (t + dt);
+    let mut slid = None;
+    let mut watch = |step: &StepView| {
+        let tilt = DEG_PER_S * step.t as f32;
         // The box's position in the palm frame.
-        let local = pose.palm.to_local(position(&world, id));
+        let pose = &step.hands[0].sample.as_ref().expect("the palm is tracked").pose;
+        let local = pose.palm.to_local(position(step.world, id));
         if tilt >= 1.0 && rest.is_none() {
             rest = Some(local);
         }
-        if first_dynamic.is_none()
-            && world.contacts().iter().any(|c| c.state == FrictionState::Dynamic)
-        {
+        let contacts = step.world.contacts();
+        if first_dynamic.is_none() && contacts.iter().any(|c| c.state == FrictionState::Dynamic) {
             first_dynamic = Some(tilt);
         }
         if let Some(r) = rest
             && (local - r).length() > 0.003
+            && slid.is_none()
         {
-            assert_eq!(world.contacts().len(), 1, "only the palm touches the box");
-            return (tilt, first_dynamic.unwrap_or(f32::NAN));
+            assert_eq!(contacts.len(), 1, "only the palm touches the box");
+            slid = Some(tilt);
         }
-    }
-    panic!("the box never slid up to 40°");
+        Ok(())
+    };
+    let mut driver = Driver::new(&mut world);
+    driver.drive(hand, PoseFn::new(Side::Right, |t| Some(pose_at(t as f32)))).unwrap();
+    driver.run(((40.0 / DEG_PER_S) / dt) as usize, &mut [&mut watch]).unwrap();
+    let slid = slid.expect("the box slid before 40°");
+    (slid, first_dynamic.unwrap_or(f32::NAN))
 }
 
 #[test]
