@@ -1,60 +1,107 @@
 //! The live Leap Motion WebSocket client against a local server on
 //! loopback that streams a real recording's frames.
 
+use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::leap;
 use coulomb_hands::input::live::LiveLeap;
+use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
+use coulomb_hands::run::live::run_live;
+use coulomb_hands::run::replay::world_with_objects;
+use coulomb_hands::{InteractionConfig, ObjectDesc};
+use glam::Vec3;
 use std::net::TcpListener;
 use tungstenite::Message;
 
-#[test]
-fn streams_a_recording_over_a_local_websocket_and_skips_malformed_frames() {
-    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/leap/pinch.json.lz");
-    let text = std::fs::read_to_string(&path).unwrap();
+fn pinch_path() -> std::path::PathBuf {
+    std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/leap/pinch.json.lz")
+}
+
+/// The recording's frames as the service sends them (JSON objects).
+fn pinch_frames() -> Vec<serde_json::Value> {
+    let text = std::fs::read_to_string(pinch_path()).unwrap();
     let json = String::from_utf16(&lz_str::decompress_from_base64(text.trim()).unwrap()).unwrap();
     let root: serde_json::Value = serde_json::from_str(&json).unwrap();
-    let frames: Vec<String> =
-        root["frames"].as_array().unwrap()[..100].iter().map(|f| f.to_string()).collect();
-    let mut broken = root["frames"][100].clone();
-    broken["hands"][0].as_object_mut().unwrap().remove("palmPosition");
+    root["frames"].as_array().unwrap().clone()
+}
 
+/// Serves `messages` to the first client on a loopback WebSocket after the
+/// service's greeting, then closes; returns the URL.
+fn serve(messages: Vec<String>) -> (String, std::thread::JoinHandle<()>) {
     let listener = TcpListener::bind("127.0.0.1:0").unwrap();
     let url = format!("ws://{}/v6.json", listener.local_addr().unwrap());
     let server = std::thread::spawn(move || {
         let (stream, _) = listener.accept().unwrap();
         let mut ws = tungstenite::accept(stream).unwrap();
         ws.send(Message::text(r#"{"serviceVersion":"2.3.1","version":6}"#)).unwrap();
-        for (i, f) in frames.iter().enumerate() {
-            if i == 50 {
-                ws.send(Message::text("{not json")).unwrap();
-                ws.send(Message::text(broken.to_string())).unwrap();
-            }
-            ws.send(Message::text(f.clone())).unwrap();
+        for m in messages {
+            ws.send(Message::text(m)).unwrap();
         }
         ws.close(None).unwrap();
         // Drain until the client acknowledges the close.
         while ws.read().is_ok() {}
     });
+    (url, server)
+}
 
-    // The client runs on its own thread so a hang fails the test instead
-    // of stalling the suite.
+/// Runs `client` on its own thread, so a hang fails the test instead of
+/// stalling the suite.
+fn within_a_minute<T: Send + 'static>(client: impl FnOnce() -> T + Send + 'static) -> T {
     let (done, result) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
+    std::thread::spawn(move || done.send(client()).ok());
+    result.recv_timeout(std::time::Duration::from_secs(60)).expect("finished within 60 s")
+}
+
+#[test]
+fn streams_a_recording_over_a_local_websocket_and_skips_malformed_frames() {
+    let all = pinch_frames();
+    let mut broken = all[100].clone();
+    broken["hands"][0].as_object_mut().unwrap().remove("palmPosition");
+    let mut messages: Vec<String> = all[..100].iter().map(|f| f.to_string()).collect();
+    messages.insert(50, broken.to_string());
+    messages.insert(50, "{not json".to_string());
+    let (url, server) = serve(messages);
+    let (live, received) = within_a_minute(move || {
         let mut live = LiveLeap::connect(&url).unwrap();
         let mut received = Vec::new();
         while let Some(frame) = live.next_frame().unwrap() {
             received.push(frame);
         }
-        done.send((live, received)).ok();
+        (live, received)
     });
-    let (live, received) = result
-        .recv_timeout(std::time::Duration::from_secs(60))
-        .expect("the stream finished within 60 s");
     server.join().unwrap();
     assert_eq!(live.frames, 100);
     assert_eq!(live.skipped, 2, "the bad JSON and the frame without a palm");
     let e = live.last_error.unwrap().to_string();
     assert!(e.contains("palmPosition") && e.contains("missing"), "{e}");
     // The same frames a recording gives: the same pipeline downstream.
-    let recorded = leap::load(&path).unwrap();
+    let recorded = leap::load(&pinch_path()).unwrap();
     assert_eq!(received, recorded.frames[..100]);
+}
+
+#[test]
+fn the_live_driver_steps_the_physics_through_the_stream_and_touches_what_is_there() {
+    // 200 frames of the real pinch, and a cube floating (no gravity) where
+    // the index fingertip is half-way through them: the hand sweeps into it.
+    let frames = 200;
+    let recorded = leap::load(&pinch_path()).unwrap();
+    let conversion = Conversion::leap_desktop(Vec3::ZERO);
+    let head = &recorded.frames[..frames];
+    let playback = Playback::new("pinch", head, &conversion, DEFAULT_GRACE).unwrap();
+    let tip = playback.sample(0, 0.5 * playback.duration).unwrap().pose.fingers[1][2].b;
+    let cube = ObjectDesc::cuboid("cube", Vec3::splat(0.03), 0.05, tip);
+    let messages = pinch_frames()[..frames].iter().map(|f| f.to_string()).collect();
+    let (url, server) = serve(messages);
+    let summary = within_a_minute(move || {
+        let weightless = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
+        let (mut world, _) = world_with_objects(weightless, &[cube]).unwrap();
+        run_live(&url, &mut world, conversion, DEFAULT_GRACE, 60.0, &mut []).unwrap()
+    });
+    server.join().unwrap();
+    assert_eq!((summary.frames, summary.skipped, summary.hands_seen), (frames, 0, 1));
+    // The physics ran through the stream: up to its last frame, then stopped.
+    let dt = f64::from(InteractionConfig::default().dt);
+    let last = playback.duration;
+    assert!((summary.simulated - last).abs() <= 2.0 * dt, "{} s of {last} s", summary.simulated);
+    assert!(summary.contacts_begun > 0, "the hand never touched the cube: {summary:?}");
+    assert!(summary.objects[0].displacement > 0.001, "the cube did not move: {summary:?}");
 }
