@@ -79,14 +79,14 @@ impl Detector {
         };
         self.near_hand.clear();
         self.near_hand.extend((0..boxes.len()).filter(|&o| hand.intersects(&boxes[o])));
-        for &(bone, motion, reach) in &self.reach {
+        for (bone, motion, reach) in &self.reach {
             for &o in &self.near_hand {
-                if !reach.intersects(&boxes[o]) || known(bone, o) {
+                if !reach.intersects(&boxes[o]) || known(*bone, o) {
                     continue;
                 }
                 let object = view(o);
                 if let Some(prox) = within(&motion.now, &object, self.contact_offset) {
-                    touch(bone, motion, &object, prox);
+                    touch(*bone, *motion, &object, prox);
                 }
             }
         }

@@ -2,8 +2,8 @@
 //! contact (§3.5.5, via [`crate::friction`]), slipping surface points
 //! (§3.5.3) and skin patches (§3.5.4).
 //!
-//! * [`detect`]: the collision driver, which finds bones near objects;
-//! * [`anchor`]: what a contact holds on to (C, p, its patch's samples);
+//! * `detect.rs`: the collision driver, which finds bones near objects;
+//! * `anchor.rs`: what a contact holds on to (C, p, its patch's samples);
 //! * [`patch`]: spreading a contact's force over its skin patch;
 //! * [`surface`]: moving C along the surface by inverse ray casts;
 //! * [`event`]: begin/end events.
@@ -13,7 +13,7 @@
 //!   [`crate::InteractionConfig::contact_offset`] of the object's surface.
 //!   C is the closest (or, if penetrating, deepest-projection) point on the
 //!   object's surface; n is the object's outward normal there.
-//! * **Each step** it evaluates the contact law ([`Contact::update`]). While
+//! * **Each step** it evaluates the contact law (`Contact::update`). While
 //!   `f·n ≤ 0` (the bone hovers in the offset band or pulls away) it
 //!   transmits no force and its anchors follow the bone
 //!   ([`FrictionState::Separated`]).
@@ -160,9 +160,9 @@ impl Contact {
     }
 
     /// Evaluates the contact law for this step and updates the anchors:
-    /// reaction → resolve → slip → spread over the patch. Leaves the
-    /// sample forces on the object, with their points, in
-    /// `scratch.applied` (empty if it applies none).
+    /// reaction → resolve → slip → spread over the patch. Appends the
+    /// sample forces on the object, with their points, to
+    /// `scratch.applied` (nothing if it applies none).
     ///
     /// `proximity` is the bone–object closest-feature query, if the caller
     /// has run it; `detector` runs it when the contact needs it. A contact
@@ -177,7 +177,6 @@ impl Contact {
         settings: &LawSettings,
         scratch: &mut patch::PatchScratch,
     ) -> bool {
-        scratch.applied.clear();
         let at = self.anchor.site(object, motion);
         let reaction = self.reaction(&at, object, settings);
         let (gamma, mu) = (object.gamma, object.mu);

@@ -88,7 +88,8 @@ pub(crate) struct PatchStep {
 pub(crate) struct PatchScratch {
     deviations: Vec<Vec3>,
     sample_forces: Vec<Vec3>,
-    /// The last spread's `(force on the object, point)` per sample.
+    /// `(force on the object, point)` per sample: each spread appends its
+    /// contact's.
     pub applied: Vec<(Vec3, Vec3)>,
 }
 
@@ -96,7 +97,7 @@ pub(crate) struct PatchScratch {
 /// share of the force plus its deviation spring, limited by its own share
 /// of the friction cone (a sample beyond it slips by the slip rule, which
 /// is how a patch slips in torsion). Writes the samples' world points to
-/// `points` and `(force on the object, point)` per sample to
+/// `points` and appends `(force on the object, point)` per sample to
 /// `scratch.applied`.
 pub(crate) fn spread(
     step: &PatchStep,

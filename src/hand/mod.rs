@@ -250,7 +250,7 @@ pub struct HandSample {
 
 impl HandSample {
     /// A pose without tracker strengths (a scripted or synthetic hand).
-    pub fn pose(pose: HandPose) -> HandSample {
+    pub fn from_pose(pose: HandPose) -> HandSample {
         HandSample { pose, grab: None, pinch: None }
     }
 }

@@ -1,4 +1,4 @@
-//! Tracking input: recordings and trackers → tracked hands → [`HandPose`].
+//! Tracking input: recordings and trackers → tracked hands → [`crate::hand::HandPose`].
 //!
 //! The stage before [`crate::hand`]: a [`TrackingFrame`] holds hands in the
 //! tracker's own units and axes; a [`convert::Conversion`] maps them into the

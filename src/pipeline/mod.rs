@@ -6,7 +6,7 @@
 //! * [`world`]: the world's API (add objects and hands, set poses, read
 //!   contacts, events and states);
 //! * [`step`]: one step, stage by stage;
-//! * [`stability`]: the stability limit of explicit contact springs;
+//! * `stability.rs`: the stability limit of explicit contact springs;
 //! * [`record`]: the hook that sees every call, for session recording.
 //!
 //! Guarantees:

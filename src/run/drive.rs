@@ -71,7 +71,7 @@ impl<F: FnMut(f64) -> Option<HandPose>> HandSource for PoseFn<F> {
     }
 
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
-        Ok((self.pose)(t).map(HandSample::pose))
+        Ok((self.pose)(t).map(HandSample::from_pose))
     }
 }
 

@@ -62,7 +62,7 @@ fn grasp_point(hand: &HandSample, tip: &[Vec3; 5], aperture: f32, finger_width: 
 /// A grasp is a stretch of time during which a hand is at least three
 /// quarters of the way from its widest to its closest aperture (thumb tip
 /// to nearest fingertip). Its site is taken at its most closed instant, by
-/// [`grasp_point`]. Grasps come in time order.
+/// `grasp_point`. Grasps come in time order.
 pub fn find_grasps(playback: &Playback, step: f64) -> Vec<GraspSite> {
     let samples = (playback.duration / step).floor() as usize + 1;
     let mut out = Vec::new();

@@ -8,7 +8,7 @@
 //! * [`live`]: a live Leap Motion stream;
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
-//! * [`bench`]: the benchmark scene and its timing.
+//! * [`mod@bench`]: the benchmark scene and its timing.
 
 pub mod bench;
 pub mod demo;

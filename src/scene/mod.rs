@@ -4,7 +4,7 @@
 //! * [`object`]: [`ObjectDesc`], [`StaticDesc`], shapes and γ modes;
 //! * [`material`]: the skin-vs-material friction table, with sources;
 //! * [`mesh`]: triangle meshes from files, voxelized or decomposed;
-//! * [`file`]: JSON scene files;
+//! * [`mod@file`]: JSON scene files;
 //! * [`tower`]: the 54-block tower of the thesis's Jenga scenes.
 //!
 //! Everything here is a description: nothing touches a physics world

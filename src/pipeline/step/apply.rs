@@ -13,12 +13,13 @@ impl InteractionWorld {
     pub(super) fn apply_forces(&mut self, step: &StepScratch) {
         for &o in &step.touched {
             let slot = &mut self.objects[o];
-            let applied = step.forces[o].iter().filter(|(f, at)| f.is_finite() && at.is_finite());
             let body = &mut self.physics.bodies[slot.body];
-            for &(f, at) in applied.clone() {
+            let finite = step.forces[o].iter().filter(|(f, at)| f.is_finite() && at.is_finite());
+            // One pass: each force is applied as it is added to the total.
+            slot.hand_force = friction::total_force(finite.map(|&(f, at)| {
                 body.add_force_at_point(f, at, true);
-            }
-            slot.hand_force = friction::total_force(applied.map(|(f, _)| *f));
+                f
+            }));
         }
     }
 }

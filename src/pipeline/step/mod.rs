@@ -4,12 +4,12 @@
 //! [`InteractionWorld::apply_hand_forces`], turns the hand poses set before
 //! it into forces on the objects, stage by stage, one file each:
 //!
-//! 1. [`clear`]: last step's hand forces are cleared;
-//! 2. [`keep`]: existing contacts are kept or end;
-//! 3. [`find`]: new contacts begin, found by the collision driver;
-//! 4. [`super::stability`]: each object's stability limit on γ and damping;
-//! 5. [`update`]: every contact evaluates the contact law;
-//! 6. [`apply`]: the forces go to rapier, and each object's total (Eq. 3.10)
+//! 1. `clear.rs`: last step's hand forces are cleared;
+//! 2. `keep.rs`: existing contacts are kept or end;
+//! 3. `find.rs`: new contacts begin, found by the collision driver;
+//! 4. `../stability.rs`: each object's stability limit on γ and damping;
+//! 5. `update.rs`: every contact evaluates the contact law;
+//! 6. `apply.rs`: the forces go to rapier, and each object's total (Eq. 3.10)
 //!    is kept for [`crate::ObjectState::hand_force`].
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:

@@ -20,6 +20,9 @@ impl InteractionWorld {
         for mut c in step.candidates.drain(..) {
             let o = c.contact.object.0 as usize;
             let object = self.object_view(o, step.limits[o]);
+            // The contact appends its sample forces to its object's.
+            std::mem::swap(&mut step.patch.applied, &mut step.forces[o]);
+            let untouched = step.patch.applied.is_empty();
             let alive = c.contact.update(
                 c.proximity,
                 &step.detector,
@@ -28,11 +31,10 @@ impl InteractionWorld {
                 &settings,
                 &mut step.patch,
             );
-            let forces = &mut step.forces[o];
-            if forces.is_empty() && !step.patch.applied.is_empty() {
+            if untouched && !step.patch.applied.is_empty() {
                 step.touched.push(o);
             }
-            forces.extend_from_slice(&step.patch.applied);
+            std::mem::swap(&mut step.patch.applied, &mut step.forces[o]);
             if !alive {
                 self.push_event(ContactEventKind::Ended, &c.contact);
                 continue;

@@ -203,7 +203,7 @@ impl HandSource for &Script {
 
     /// Keys are timed in f32 seconds.
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
-        Ok(Some(HandSample::pose(self.pose(t as f32))))
+        Ok(Some(HandSample::from_pose(self.pose(t as f32))))
     }
 }
 
