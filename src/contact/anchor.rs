@@ -60,6 +60,7 @@ impl BoneAnchor {
     }
 
     /// The anchored point p on the bone's surface, for a contact normal `n`.
+    #[inline]
     fn point(self, bone: BoneShape, n: Vec3) -> Vec3 {
         match (self, bone) {
             (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => {
@@ -74,6 +75,7 @@ impl BoneAnchor {
 
     /// The skin frame's rotation (world): the palm's, turned for a finger
     /// bone by how the bone has swung in the palm since it was anchored.
+    #[inline]
     pub fn rotation(self, bone: BoneShape, palm: &Palm) -> Quat {
         match (self, bone) {
             (BoneAnchor::Capsule { dir_in_palm, .. }, BoneShape::Capsule(c)) => {
@@ -151,6 +153,7 @@ impl Anchor {
     }
 
     /// Where the anchors are this step.
+    #[inline]
     pub fn site(&self, object: &ObjectView, motion: &BoneMotion) -> Site {
         let pose = &object.pose;
         let n = (pose.rotation * self.n_local).normalize_or_zero();

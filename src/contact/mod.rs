@@ -107,6 +107,7 @@ pub(crate) struct ObjectView<'a> {
 }
 
 impl ObjectView<'_> {
+    #[inline]
     fn velocity_at(&self, q: Vec3) -> Vec3 {
         self.linvel + self.angvel.cross(q - self.center_of_mass)
     }

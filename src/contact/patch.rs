@@ -58,6 +58,7 @@ pub fn sample_offsets(n: Vec3, samples: usize, radius: f32) -> Vec<Vec3> {
 ///   object point has moved from its skin point, relative to the patch
 ///   centre (m); already limited by the caller's torsional friction.
 /// * `stiffness`: γ (N/m), split as γ/N per sample.
+#[inline]
 pub fn sample_forces(total: Vec3, deviations: &[Vec3], stiffness: f32, out: &mut Vec<Vec3>) {
     out.clear();
     let n = deviations.len().max(1) as f32;

@@ -4,12 +4,14 @@ use super::{FrictionCoefficients, FrictionState, KineticFriction, ResolvedForce}
 use glam::Vec3;
 
 /// Eq. 3.4: the spring contact force `f = γ(C − p)` on the bone.
+#[inline]
 pub fn spring_force(gamma: f32, c: Vec3, p: Vec3) -> Vec3 {
     gamma * (c - p)
 }
 
 /// Eq. 3.5 and Eq. 3.6: the normal part `(f·n)n` and the tangential rest
 /// `f − (f·n)n` of a force, for a unit normal `n`.
+#[inline]
 pub fn split_normal_tangential(f: Vec3, n: Vec3) -> (Vec3, Vec3) {
     let normal = f.dot(n) * n;
     (normal, f - normal)
@@ -17,6 +19,7 @@ pub fn split_normal_tangential(f: Vec3, n: Vec3) -> (Vec3, Vec3) {
 
 /// Eq. 3.7: the force is inside the friction cone of half-angle `atan μ_st`
 /// around `n`: `f·n > 0 ∧ |f_t| ≤ μ_st (f·n)`.
+#[inline]
 pub fn inside_friction_cone(f: Vec3, n: Vec3, static_mu: f32) -> bool {
     let f_n = f.dot(n);
     let (_, f_t) = split_normal_tangential(f, n);
@@ -28,6 +31,7 @@ pub fn inside_friction_cone(f: Vec3, n: Vec3, static_mu: f32) -> bool {
 ///
 /// Outside the cone, [`KineticFriction::Thesis`] scales `f_t` by μ_dyn;
 /// [`KineticFriction::Coulomb`] gives it the magnitude `μ_dyn·|f_n|`.
+#[inline]
 pub fn tangential_friction(
     f_t: Vec3,
     normal_magnitude: f32,
@@ -52,6 +56,7 @@ pub fn tangential_friction(
 /// A force with `f·n ≤ 0` (the bone is not pressing) yields no force and
 /// [`FrictionState::Separated`]: the kinetic rule read literally would keep a pulling
 /// normal force and a tangential force, which is adhesion, not friction.
+#[inline]
 pub fn resolve(
     f: Vec3,
     n: Vec3,
@@ -72,10 +77,13 @@ pub fn resolve(
 }
 
 /// Eq. 3.10: the total force of a hand's contacts on one object,
-/// `F = Σ (f_n + f_T)`, given each contact's force on the object (N).
-/// Forces that are not finite are left out, as they are never applied.
-pub fn total_force(on_object: impl IntoIterator<Item = Vec3>) -> Vec3 {
-    on_object.into_iter().filter(|f| f.is_finite()).fold(Vec3::ZERO, |sum, f| sum + f)
+/// `F = Σ (f_n + f_T)` (N): `total` plus each further contact's force on
+/// the object, so it can be summed contact by contact as forces are
+/// applied. Forces that are not finite are left out, as they are never
+/// applied.
+#[inline]
+pub fn total_force(total: Vec3, on_object: impl IntoIterator<Item = Vec3>) -> Vec3 {
+    on_object.into_iter().filter(|f| f.is_finite()).fold(total, |sum, f| sum + f)
 }
 
 #[cfg(test)]
@@ -162,7 +170,13 @@ mod tests {
     #[test]
     fn the_total_adds_every_finite_contact_force() {
         let forces = [Vec3::new(0.1, 2.0, 0.0), Vec3::new(-0.3, 0.5, 0.2), Vec3::NAN];
-        assert!((total_force(forces) - Vec3::new(-0.2, 2.5, 0.2)).length() < 1e-6);
-        assert_eq!(total_force([]), Vec3::ZERO);
+        assert!((total_force(Vec3::ZERO, forces) - Vec3::new(-0.2, 2.5, 0.2)).length() < 1e-6);
+        assert_eq!(total_force(Vec3::ZERO, []), Vec3::ZERO);
+        // Contact by contact, it comes to the same.
+        let first = total_force(Vec3::ZERO, forces[..1].iter().copied());
+        assert_eq!(
+            total_force(first, forces[1..].iter().copied()),
+            total_force(Vec3::ZERO, forces)
+        );
     }
 }

@@ -55,6 +55,7 @@ pub struct FrictionCoefficients {
 impl FrictionCoefficients {
     /// The larger of the two: no contact's friction exceeds this times its
     /// normal force.
+    #[inline]
     pub fn max(&self) -> f32 {
         self.static_mu.max(self.dynamic_mu)
     }
@@ -105,6 +106,7 @@ pub struct ResolvedForce {
 /// `f` (N) of a bone whose spring sees `seen_depth` (m): no force from a bone
 /// short of the surface, whatever its damper says; the cone and kinetic
 /// rule of [`resolve`]; and friction under the force cap, when there is one.
+#[inline]
 pub fn contact_law(
     f: Vec3,
     n: Vec3,
@@ -131,6 +133,7 @@ impl ResolvedForce {
     };
 
     /// The force applied to the object: the opposite of the reaction (N).
+    #[inline]
     pub fn on_object(&self) -> Vec3 {
         -(self.normal + self.tangential)
     }

@@ -15,6 +15,7 @@ use glam::Vec3;
 /// inside ramps in like a finger pressing at `max_speed` instead of
 /// releasing the whole spring at once; an object falling onto a hand meets
 /// the full spring.
+#[inline]
 pub fn speed_limited_depth(
     depth: f32,
     previous: f32,
@@ -29,6 +30,7 @@ pub fn speed_limited_depth(
 /// The bone's velocity (m/s) with its speed into the object (along `−n`)
 /// held to `max_speed`, so a bone that teleports cannot kick the object
 /// through the damper either.
+#[inline]
 pub fn limited_bone_velocity(velocity: Vec3, n: Vec3, max_speed: f32) -> Vec3 {
     let into = -velocity.dot(n);
     if into > max_speed { velocity + (into - max_speed) * n } else { velocity }
@@ -37,6 +39,7 @@ pub fn limited_bone_velocity(velocity: Vec3, n: Vec3, max_speed: f32) -> Vec3 {
 /// The spring of [`spring_force`] with its normal stretch replaced by
 /// `seen_depth` (m), the depth the safeguards let it see; the tangential
 /// stretch is untouched.
+#[inline]
 pub fn spring_at_depth(gamma: f32, c: Vec3, p: Vec3, n: Vec3, seen_depth: f32) -> Vec3 {
     let depth = (c - p).dot(n);
     spring_force(gamma, c, p) + gamma * (seen_depth - depth) * n
@@ -55,16 +58,19 @@ pub struct ForceCap {
 
 impl ForceCap {
     /// The cap of an object whose bounding sphere is `diameter` across (m).
+    #[inline]
     pub fn for_diameter(diameter: f32) -> ForceCap {
         ForceCap { max_depth: MAX_PENETRATION_FRACTION * diameter }
     }
 
     /// The depth the spring sees for a bone `depth` deep (m).
+    #[inline]
     pub fn depth(self, depth: f32) -> f32 {
         depth.min(self.max_depth)
     }
 
     /// The largest normal spring force, `γ · 0.2 · d` (N).
+    #[inline]
     pub fn normal_force(self, gamma: f32) -> f32 {
         gamma * self.max_depth
     }
@@ -73,6 +79,7 @@ impl ForceCap {
     /// [`Self::normal_force`]. Kinetic friction as written in the thesis
     /// scales an unbounded stretch, and a damper can add normal force beyond
     /// the spring's; this bounds both.
+    #[inline]
     pub fn tangential(self, f_t: Vec3, mu: FrictionCoefficients, gamma: f32) -> Vec3 {
         // Multiplied as (μ·γ)·d_max, not μ·(γ·d_max): recorded traces and
         // sessions depend on the last bit.
@@ -84,6 +91,7 @@ impl ForceCap {
 
 /// The damping coefficient `c = 2ζ√(γ m)` (N·s/m) that gives one contact
 /// spring of stiffness γ on a body of mass `m` the damping ratio ζ.
+#[inline]
 pub fn damping_coefficient(gamma: f32, mass: f32, damping_ratio: f32) -> f32 {
     2.0 * damping_ratio * (gamma * mass).sqrt()
 }
@@ -91,6 +99,7 @@ pub fn damping_coefficient(gamma: f32, mass: f32, damping_ratio: f32) -> f32 {
 /// The Kelvin–Voigt reaction on the bone: the spring plus a damper on the
 /// relative velocity. `relative_velocity` is the bone's velocity minus the
 /// object's velocity at the contact (m/s); `C − p` shrinks at that rate.
+#[inline]
 pub fn damped_spring_force(spring: Vec3, damping: f32, relative_velocity: Vec3) -> Vec3 {
     spring - damping * relative_velocity
 }

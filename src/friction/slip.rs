@@ -10,6 +10,7 @@ use glam::Vec3;
 /// with their normal force split alike) whose tangential stretch is
 /// `stretch_t` (m) is outside the static friction cone:
 /// `|stretch_t| > μ_st · f_n / γ`, with `f_n` the normal force (N).
+#[inline]
 pub fn slips(stretch_t: Vec3, normal_force: f32, mu: FrictionCoefficients, gamma: f32) -> bool {
     let limit = mu.static_mu * normal_force / gamma;
     stretch_t.length_squared() > limit * limit
@@ -21,6 +22,7 @@ pub fn slips(stretch_t: Vec3, normal_force: f32, mu: FrictionCoefficients, gamma
 /// back to zero force. Where μ_dyn > μ_st the stretch stops at the static
 /// cone: a spring re-anchored beyond it would keep slipping and pull harder
 /// than it can hold, feeding energy in.
+#[inline]
 pub fn kinetic_stretch(normal_force: f32, mu: FrictionCoefficients, gamma: f32) -> f32 {
     if gamma <= 0.0 {
         return 0.0;
@@ -31,6 +33,7 @@ pub fn kinetic_stretch(normal_force: f32, mu: FrictionCoefficients, gamma: f32) 
 /// The slip rule: a slipping spring re-anchors so that its tangential
 /// stretch keeps the direction of `stretch_t` and the length
 /// [`kinetic_stretch`]. Whole contacts and patch samples both use it.
+#[inline]
 pub fn slipped_stretch(
     stretch_t: Vec3,
     normal_force: f32,

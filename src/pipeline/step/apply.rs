@@ -1,25 +1,27 @@
-//! Stage 6: the forces go to rapier.
+//! Stage 6: a contact's forces go to rapier.
 
-use super::StepScratch;
 use crate::friction;
 use crate::pipeline::InteractionWorld;
+use crate::scene::ObjectId;
+use glam::Vec3;
 
 impl InteractionWorld {
-    /// Applies every sample force at its point with rapier's
-    /// `add_force_at_point`, skipping any that is not finite, and keeps
-    /// each touched object's total hand force ([`friction::total_force`]:
-    /// the samples of a contact share its force exactly, so their sum is
-    /// the contacts' sum).
-    pub(super) fn apply_forces(&mut self, step: &StepScratch) {
-        for &o in &step.touched {
-            let slot = &mut self.objects[o];
-            let body = &mut self.physics.bodies[slot.body];
-            let finite = step.forces[o].iter().filter(|(f, at)| f.is_finite() && at.is_finite());
-            // One pass: each force is applied as it is added to the total.
-            slot.hand_force = friction::total_force(finite.map(|&(f, at)| {
+    /// Applies a contact's sample forces `(force, point)` to its object with
+    /// rapier's `add_force_at_point`, skipping any that is not finite, and
+    /// adds them to the object's total hand force
+    /// ([`friction::total_force`]: the samples of a contact share its force
+    /// exactly, so their sum is the contacts' sum).
+    pub(super) fn apply_forces(&mut self, object: ObjectId, forces: &[(Vec3, Vec3)]) {
+        let slot = &mut self.objects[object.0 as usize];
+        let body = &mut self.physics.bodies[slot.body];
+        let finite = forces.iter().filter(|(f, at)| f.is_finite() && at.is_finite());
+        // One pass: each force is applied as it is added to the total.
+        slot.hand_force = friction::total_force(
+            slot.hand_force,
+            finite.map(|&(f, at)| {
                 body.add_force_at_point(f, at, true);
                 f
-            }));
-        }
+            }),
+        );
     }
 }

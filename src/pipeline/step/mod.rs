@@ -8,9 +8,11 @@
 //! 2. `keep.rs`: existing contacts are kept or end;
 //! 3. `find.rs`: new contacts begin, found by the collision driver;
 //! 4. `../stability.rs`: each object's stability limit on γ and damping;
-//! 5. `update.rs`: every contact evaluates the contact law;
-//! 6. `apply.rs`: the forces go to rapier, and each object's total (Eq. 3.10)
-//!    is kept for [`crate::ObjectState::hand_force`].
+//! 5. `update.rs`: each contact evaluates the contact law;
+//! 6. `apply.rs`: its forces go to rapier, and are added to its object's
+//!    total for [`crate::ObjectState::hand_force`].
+//!
+//! Stages 5 and 6 run contact by contact, in update order.
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
 //! gravity, object–object contacts and integration.
@@ -33,7 +35,6 @@ use crate::contact::{
 use crate::friction::ForceCap;
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
-use glam::Vec3;
 use rapier3d::parry::bounding_volume::Aabb;
 
 impl InteractionWorld {
@@ -57,8 +58,19 @@ impl InteractionWorld {
         self.keep_contacts(&mut step);
         self.find_new_contacts(&mut step);
         self.stability_limits(&mut step);
-        self.update_contacts(&mut step);
-        self.apply_forces(&step);
+        // Stages 5 and 6 go contact by contact, so each patch's forces reach
+        // rapier while they are still in cache.
+        let mut candidates = std::mem::take(&mut step.candidates);
+        let mut contacts = Vec::with_capacity(candidates.len());
+        for candidate in candidates.drain(..) {
+            if let Some(contact) = self.update_contact(candidate, &mut step) {
+                self.apply_forces(contact.object, &step.patch.applied);
+                contacts.push(contact);
+            }
+        }
+        step.candidates = candidates;
+        contacts.sort_by_key(contact_key);
+        self.contacts = contacts;
         self.scratch = step;
     }
 
@@ -151,11 +163,6 @@ pub(crate) struct StepScratch {
     pub(super) boxes: Vec<Aabb>,
     pub(super) limits: Vec<StabilityScale>,
     pub(super) patch: PatchScratch,
-    /// Per object: its contacts' sample forces on it this step, as
-    /// `(force, point)` in update order.
-    pub(super) forces: Vec<Vec<(Vec3, Vec3)>>,
-    /// The objects with forces this step, in the order first touched.
-    pub(super) touched: Vec<usize>,
 }
 
 impl StepScratch {
