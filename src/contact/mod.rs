@@ -114,7 +114,7 @@ impl ObjectView<'_> {
 }
 
 /// Step-wide settings of the contact law.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct LawSettings {
     pub dt: f32,
     pub kinetic: KineticFriction,

@@ -18,7 +18,7 @@ impl InteractionWorld {
         step.boxes.clear();
         let colliders = &world.physics.colliders;
         step.boxes.extend(world.objects.iter().map(|o| colliders[o.collider].compute_aabb()));
-        let settings = world.law_settings();
+        let settings = step.settings;
         let kept = &step.candidates;
         step.found.clear();
         for h in 0..world.hands.len() {

@@ -62,8 +62,8 @@ impl InteractionWorld {
         // rapier while they are still in cache.
         let mut candidates = std::mem::take(&mut step.candidates);
         let mut contacts = Vec::with_capacity(candidates.len());
-        for candidate in candidates.drain(..) {
-            if let Some(contact) = self.update_contact(candidate, &mut step) {
+        for Candidate { mut contact, proximity, motion, is_new } in candidates.drain(..) {
+            if self.update_contact(&mut contact, proximity, &motion, is_new, &mut step) {
                 self.apply_forces(contact.object, &step.patch.applied);
                 contacts.push(contact);
             }
@@ -120,16 +120,6 @@ impl InteractionWorld {
         })
     }
 
-    fn law_settings(&self) -> LawSettings {
-        LawSettings {
-            dt: self.config.dt,
-            kinetic: self.config.kinetic,
-            max_penetration_speed: self.config.max_penetration_speed,
-            probe_offset: self.config.probe_offset,
-            patch: self.config.patch,
-        }
-    }
-
     fn push_event(&mut self, kind: ContactEventKind, c: &Contact) {
         let (hand, bone, object, point, time) = (c.hand, c.bone, c.object, c.point, self.time);
         self.events.push(ContactEvent { kind, hand, bone, object, point, time });
@@ -163,11 +153,20 @@ pub(crate) struct StepScratch {
     pub(super) boxes: Vec<Aabb>,
     pub(super) limits: Vec<StabilityScale>,
     pub(super) patch: PatchScratch,
+    /// The contact law's settings, from the world's config.
+    pub(super) settings: LawSettings,
 }
 
 impl StepScratch {
     pub(super) fn new(config: &InteractionConfig) -> StepScratch {
         let detector = Detector::new(config.contact_offset, config.release_offset);
-        StepScratch { detector, ..StepScratch::default() }
+        let settings = LawSettings {
+            dt: config.dt,
+            kinetic: config.kinetic,
+            max_penetration_speed: config.max_penetration_speed,
+            probe_offset: config.probe_offset,
+            patch: config.patch,
+        };
+        StepScratch { detector, settings, ..StepScratch::default() }
     }
 }

@@ -1,34 +1,34 @@
 //! Stage 5: a contact evaluates the contact law.
 
-use super::{Candidate, StepScratch};
-use crate::contact::{Contact, ContactEventKind};
+use super::StepScratch;
+use crate::contact::detect::Proximity;
+use crate::contact::{BoneMotion, Contact, ContactEventKind};
 use crate::pipeline::InteractionWorld;
 
 impl InteractionWorld {
     /// Updates one kept or new contact under its object's stability limit
     /// ([`Contact::update`]), leaving its sample forces in
     /// `step.patch.applied`. A contact that has ended gets its `Ended`
-    /// event and is gone (`None`); a new one that lives gets its `Began`
-    /// event.
+    /// event and `false`; a new one that lives gets its `Began` event.
     pub(super) fn update_contact(
         &mut self,
-        c: Candidate,
+        contact: &mut Contact,
+        proximity: Option<Proximity>,
+        motion: &BoneMotion,
+        is_new: bool,
         step: &mut StepScratch,
-    ) -> Option<Contact> {
-        let Candidate { mut contact, proximity, motion, is_new } = c;
+    ) -> bool {
         let o = contact.object.0 as usize;
         let object = self.object_view(o, step.limits[o]);
         step.patch.applied.clear();
-        let settings = self.law_settings();
+        let settings = &step.settings;
         let alive =
-            contact.update(proximity, &step.detector, &motion, &object, &settings, &mut step.patch);
+            contact.update(proximity, &step.detector, motion, &object, settings, &mut step.patch);
         if !alive {
-            self.push_event(ContactEventKind::Ended, &contact);
-            return None;
+            self.push_event(ContactEventKind::Ended, contact);
+        } else if is_new {
+            self.push_event(ContactEventKind::Began, contact);
         }
-        if is_new {
-            self.push_event(ContactEventKind::Began, &contact);
-        }
-        Some(contact)
+        alive
     }
 }
