@@ -294,55 +294,43 @@ fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), RunError> {
 
 /// Replays a recorded session file and prints what its objects did.
 fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
-    use coulomb_hands::output::session::{Session, object_states};
+    use coulomb_hands::output::Session;
+    use coulomb_hands::run::observe::Summary;
     let session = Session::load(file)?;
-    let mut start = None;
-    let mut max_speed: Vec<f32> = Vec::new();
+    // Objects are followed from the end of the first step, when all exist.
+    let mut summary: Option<Result<Summary, coulomb_hands::WorldError>> = None;
     let world = session.replay(|w| {
-        let states = object_states(w);
-        start.get_or_insert_with(|| states.iter().map(|s| s.position).collect::<Vec<_>>());
-        max_speed.resize(states.len(), 0.0);
-        for (m, s) in max_speed.iter_mut().zip(&states) {
-            *m = m.max(s.linvel.length());
+        let s = summary.get_or_insert_with(|| Summary::new(w));
+        if let Ok(s) = s
+            && let Err(e) = s.observe_world(w)
+        {
+            summary = Some(Err(e));
         }
     })?;
-    let end = object_states(&world);
-    let start = start.unwrap_or_default();
-    let objects: Vec<serde_json::Value> = end
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            serde_json::json!({
-                "name": world.object_name(coulomb_hands::ObjectId(i as u32)),
-                "displacement": start.get(i).map_or(0.0, |p| (s.position - *p).length()),
-                "max_speed": max_speed.get(i).copied().unwrap_or(0.0),
-                "end": s.position.to_array(),
-            })
-        })
-        .collect();
-    let summary = serde_json::json!({
-        "session": file.display().to_string(),
-        "steps": session.steps(),
-        "objects": objects
-    });
+    let objects = match summary.transpose()? {
+        Some(s) => s.objects(&world)?,
+        None => Vec::new(),
+    };
     if json {
+        let summary = serde_json::json!({
+            "session": file.display().to_string(),
+            "steps": session.steps(),
+            "objects": objects
+        });
         println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
-    } else {
+        return Ok(());
+    }
+    println!(
+        "replayed session {} ({} steps, {:.2} s)",
+        file.display(),
+        session.steps(),
+        world.time()
+    );
+    for o in &objects {
         println!(
-            "replayed session {} ({} steps, {:.2} s)",
-            file.display(),
-            session.steps(),
-            world.time()
+            "object {}: moved {:.3} m, max speed {:.3} m/s",
+            o.name, o.displacement, o.max_speed
         );
-        for o in &objects {
-            let number = |k: &str| o[k].as_f64().unwrap_or(f64::NAN);
-            println!(
-                "object {}: moved {:.3} m, max speed {:.3} m/s",
-                o["name"].as_str().unwrap_or(""),
-                number("displacement"),
-                number("max_speed")
-            );
-        }
     }
     Ok(())
 }

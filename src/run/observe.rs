@@ -99,13 +99,12 @@ impl Summary {
     }
 }
 
-impl Observer for Summary {
-    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
-        let world = step.world;
+impl Summary {
+    /// Counts this step's contacts begun and follows the objects' speeds,
+    /// for a world stepped without hand sources (a session replay).
+    pub fn observe_world(&mut self, world: &InteractionWorld) -> Result<(), WorldError> {
         let began = world.events().iter().filter(|e| e.kind == ContactEventKind::Began);
         self.contacts_begun += began.count();
-        let hands = step.hands.iter().filter_map(|h| h.sample.as_ref());
-        self.all_finite &= hands.map(|s| s.pose.palm_surface()).all(|p| p.is_finite());
         for (max, id) in self.max_speed.iter_mut().zip(world.object_ids()) {
             let s = world.object_state(id)?;
             *max = max.max(s.linvel.length());
@@ -113,5 +112,13 @@ impl Observer for Summary {
                 s.position.is_finite() && s.rotation.is_finite() && s.linvel.is_finite();
         }
         Ok(())
+    }
+}
+
+impl Observer for Summary {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let hands = step.hands.iter().filter_map(|h| h.sample.as_ref());
+        self.all_finite &= hands.map(|s| s.pose.palm_surface()).all(|p| p.is_finite());
+        Ok(self.observe_world(step.world)?)
     }
 }
