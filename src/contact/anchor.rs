@@ -19,6 +19,8 @@ pub(crate) struct Anchor {
     /// Per sample: its point in the object frame and its skin offset from p
     /// in the bone frame.
     pub samples: Vec<(Vec3, Vec3)>,
+    /// The patch's radius on the object (m).
+    pub radius: f32,
     /// The penetration depth the force saw last step (m), for the
     /// penetration-speed limit.
     pub limited_depth: f32,
@@ -31,8 +33,10 @@ pub(crate) enum BoneAnchor {
     /// palm frame when the contact began (to carry the patch's skin offsets
     /// along as the finger bends).
     Capsule { s: f32, dir_in_palm: Vec3 },
-    /// p in the palm frame.
-    Palm { local: Vec3 },
+    /// p in the palm frame, and the outward normal (palm frame) of the
+    /// palm face p lies on, when the contact presses on that face's
+    /// interior (see [`palm_face_under`]).
+    Palm { local: Vec3, face: Option<Vec3> },
 }
 
 /// Where a contact's anchors are this step (world).
@@ -40,8 +44,11 @@ pub(crate) enum BoneAnchor {
 pub(crate) struct Site {
     /// The contact point C on the object's surface (m).
     pub c: Vec3,
-    /// The object's outward normal at C.
+    /// The contact normal: the object's outward normal at C, or, on the
+    /// interior of a palm face, that face's inward normal (unit).
     pub n: Vec3,
+    /// The object's outward surface normal at C (unit).
+    pub surface_n: Vec3,
     /// The bone's point p now and one step ago (m).
     pub p: Vec3,
     pub p_prev: Vec3,
@@ -55,7 +62,25 @@ impl BoneAnchor {
                 let dir = palm.rotation.inverse() * (cap.b - cap.a).normalize_or_zero();
                 BoneAnchor::Capsule { s: cap.closest_parameter(c), dir_in_palm: dir }
             }
-            BoneShape::Palm(p) => BoneAnchor::Palm { local: p.to_local(palm_point_under(p, c, n)) },
+            BoneShape::Palm(p) => {
+                let local = p.to_local(palm_point_under(p, c, n));
+                BoneAnchor::Palm { local, face: palm_face_under(p, local, n) }
+            }
+        }
+    }
+
+    /// Whether p presses on the interior of a flat palm face.
+    #[inline]
+    pub fn is_flat(self) -> bool {
+        matches!(self, BoneAnchor::Palm { face: Some(_), .. })
+    }
+
+    /// The contact normal for an object surface normal `n` (see [`Site::n`]).
+    #[inline]
+    pub fn normal(self, palm: &Palm, n: Vec3) -> Vec3 {
+        match self {
+            BoneAnchor::Palm { face: Some(face), .. } => -(palm.rotation * face),
+            _ => n,
         }
     }
 
@@ -66,7 +91,7 @@ impl BoneAnchor {
             (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => {
                 c.axis_point(s) - c.radius * n
             }
-            (BoneAnchor::Palm { local }, BoneShape::Palm(p)) => p.to_world(local),
+            (BoneAnchor::Palm { local, .. }, BoneShape::Palm(p)) => p.to_world(local),
             // A bone never changes kind; keep a harmless answer for the type system.
             (_, BoneShape::Capsule(c)) => c.centroid(),
             (_, BoneShape::Palm(p)) => p.center,
@@ -102,6 +127,27 @@ fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
     if exit.is_finite() { c - n * exit } else { c }
 }
 
+/// How far inside a palm face's edges (m) a contact must press for the
+/// face's normal to be the contact normal. At the edge itself the palm has
+/// no normal, and the object's is the contact's.
+const PALM_EDGE_MARGIN: f32 = 0.002;
+
+/// The outward normal (palm frame) of the palm face whose interior the palm
+/// point `local` (palm frame) lies on, if the object's normal `n` (world)
+/// faces it. A flat palm under a flat face, an edge or a corner is a plane:
+/// its normal is the contact's, however the object rocks on the soft
+/// contact, just as a real box on a real palm slides at atan μ_st whatever
+/// its height. Near a palm edge, or for a face turned away by more than
+/// 60°, the object's normal stays the contact's.
+fn palm_face_under(palm: &Palm, local: Vec3, n: Vec3) -> Option<Vec3> {
+    let h = palm.half_extents;
+    let axis = (local / h).abs().max_position();
+    let face = Vec3::AXES[axis] * local[axis].signum();
+    let interior = (0..3).all(|j| j == axis || local[j].abs() <= h[j] - PALM_EDGE_MARGIN);
+    let facing = -(palm.rotation * face).dot(n) >= 0.5;
+    (interior && facing && (local[axis].abs() - h[axis]).abs() <= PALM_EDGE_MARGIN).then_some(face)
+}
+
 /// The contact site on the face found by the closest-feature query, under
 /// the bone's point nearest the object's centre: the middle of the overlap
 /// of a flat bone and a flat face, wherever either has slid. This is the
@@ -130,10 +176,12 @@ impl Anchor {
         let site = site_under_bone(&motion.now, object, near);
         let (c, n) = (site.point, site.normal);
         let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, c, n);
+        // A finger's pad is soft and round: pressed near an edge, it wraps
+        // round it. The palm's wide flat ring must fit the face it is on.
         let radius = match bone.skin_class() {
             SkinClass::Finger => patch.finger_radius,
             SkinClass::Thumb => patch.thumb_radius,
-            SkinClass::Palm => patch.palm_radius,
+            SkinClass::Palm => patch::fit_to_face(object, c, n, patch.samples, patch.palm_radius),
         };
         let rot_inv = bone_anchor.rotation(motion.now, &motion.palm_now).inverse();
         let samples = patch::sample_offsets(n, patch.samples, radius)
@@ -148,6 +196,7 @@ impl Anchor {
             n_local: object.pose.rotation.inverse() * n,
             bone: bone_anchor,
             samples,
+            radius,
             limited_depth: 0.0,
         }
     }
@@ -156,10 +205,12 @@ impl Anchor {
     #[inline]
     pub fn site(&self, object: &ObjectView, motion: &BoneMotion) -> Site {
         let pose = &object.pose;
-        let n = (pose.rotation * self.n_local).normalize_or_zero();
+        let surface_n = (pose.rotation * self.n_local).normalize_or_zero();
+        let n = self.bone.normal(&motion.palm_now, surface_n);
         Site {
             c: pose.transform_point(self.c_local),
             n,
+            surface_n,
             p: self.bone.point(motion.now, n),
             p_prev: self.bone.point(motion.prev, n),
         }
@@ -181,7 +232,7 @@ impl Anchor {
         probe_offset: f32,
     ) {
         let pose = &object.pose;
-        let here = SurfacePoint { point: at.c, normal: at.n };
+        let here = SurfacePoint { point: at.c, normal: at.surface_n };
         let site = site_under_bone(&motion.now, object, here);
         let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, site.point, site.normal);
         let p_new = bone_anchor.point(motion.now, site.normal);

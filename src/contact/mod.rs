@@ -60,7 +60,9 @@ pub struct Contact {
     pub object: ObjectId,
     /// The contact point C on the object's surface (world, m).
     pub point: Vec3,
-    /// The object's outward surface normal at C (world, unit).
+    /// The contact normal at C (world, unit): the object's outward surface
+    /// normal there, or for a press on the interior of a palm face, that
+    /// face's inward normal (the plane the object rests on).
     pub normal: Vec3,
     /// The bone's point p that pushes into the object (world, m).
     pub bone_point: Vec3,
@@ -97,6 +99,10 @@ pub(crate) struct ObjectView<'a> {
     pub linvel: Vec3,
     pub angvel: Vec3,
     pub center_of_mass: Vec3,
+    /// The largest principal 1/inertia (1/(kg·m²)).
+    pub inv_inertia: f32,
+    /// How many hand contacts share the object this step (≥ 1).
+    pub sharing: f32,
     /// Contact stiffness γ (N/m) and damping (N·s/m), under the stability
     /// limit.
     pub gamma: f32,
@@ -121,6 +127,8 @@ pub(crate) struct LawSettings {
     pub max_penetration_speed: Option<f32>,
     pub probe_offset: f32,
     pub patch: patch::PatchConfig,
+    /// The contact dampers' damping ratio ζ (0 without dampers).
+    pub damping_ratio: f32,
 }
 
 /// The reaction on the bone before the friction cone.
@@ -266,10 +274,16 @@ impl Contact {
     ) {
         let pose = &object.pose;
         let anchor = &self.anchor;
+        let center = pose.transform_point(anchor.c_local);
+        let rocking = if anchor.bone.is_flat() {
+            patch::Rocking::rigid(object, anchor.samples.len(), anchor.radius, settings)
+        } else {
+            patch::Rocking::soft(object)
+        };
         let skin = Mat3::from_quat(anchor.bone.rotation(motion.now, &motion.palm_now));
         let skin_before = Mat3::from_quat(anchor.bone.rotation(motion.prev, &motion.palm_prev));
         let step = patch::PatchStep {
-            center: pose.transform_point(anchor.c_local),
+            center,
             normal: (pose.rotation * anchor.n_local).normalize_or_zero(),
             skin,
             skin_rate: (skin - skin_before) * (1.0 / settings.dt),
@@ -278,9 +292,10 @@ impl Contact {
             gamma: object.gamma,
             damping: object.damping,
             mu: object.mu,
+            rocking,
         };
         patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
         self.point = step.center;
-        self.normal = step.normal;
+        self.normal = self.anchor.bone.normal(&motion.palm_now, step.normal);
     }
 }

@@ -8,9 +8,9 @@
 //! but resist twisting and rocking of the object against the skin: the
 //! stabilising effect the thesis reports for 9 samples over 1.
 
-use super::ObjectView;
 use super::anchor::Anchor;
 use super::surface;
+use super::{LawSettings, ObjectView};
 use crate::friction::{FrictionCoefficients, slipped_stretch, slips};
 use glam::{Mat3, Vec3};
 
@@ -51,6 +51,37 @@ pub fn sample_offsets(n: Vec3, samples: usize, radius: f32) -> Vec<Vec3> {
     out
 }
 
+/// How many halvings of the search interval fit a patch's ring to its face:
+/// to 1/64 of the configured radius.
+const FIT_STEPS: usize = 6;
+
+/// The largest ring radius, up to `radius` (m), whose samples all lie on the
+/// face of C (normal `n`): a 3 cm palm ring on a 2 cm cube shrinks to the
+/// cube's face, instead of wrapping its samples round the edges onto the
+/// sides, where they would press sideways. Found by bisection; a ring that
+/// fits nowhere leaves every sample at C.
+pub(crate) fn fit_to_face(
+    object: &ObjectView,
+    c: Vec3,
+    n: Vec3,
+    samples: usize,
+    radius: f32,
+) -> f32 {
+    let fits = |r: f32| {
+        let on_face = |o: &Vec3| surface::over_face(object.shape, &object.pose, c + *o, n, 0.6 * r);
+        sample_offsets(n, samples, r).iter().skip(1).all(on_face)
+    };
+    if fits(radius) {
+        return radius;
+    }
+    let (mut fitting, mut too_big) = (0.0, radius);
+    for _ in 0..FIT_STEPS {
+        let mid = 0.5 * (fitting + too_big);
+        if fits(mid) { fitting = mid } else { too_big = mid }
+    }
+    fitting
+}
+
 /// The per-sample forces on the object.
 ///
 /// * `total`: the contact's force on the object (N).
@@ -64,6 +95,87 @@ pub fn sample_forces(total: Vec3, deviations: &[Vec3], stiffness: f32, out: &mut
     let n = deviations.len().max(1) as f32;
     let mean = deviations.iter().copied().sum::<Vec3>() / n;
     out.extend(deviations.iter().map(|e| total / n - stiffness / n * (*e - mean)));
+}
+
+/// The share of the explicit integrator's stability bound on rocking
+/// (`dt²·K/I < 4` for a rotational stiffness K) that the rocking springs of
+/// all patches on one object may use together.
+const ROCKING_SHARE: f32 = 0.25;
+
+/// How a patch resists rocking: the normal parts of its deviation springs.
+///
+/// A flat object on a flat bone (a box on the palm) is held upright by
+/// where the pressure sits under it, not by how soft the skin is. With the
+/// deviation springs at γ/N, a box on a palm of γ 400 N/m rocks by degrees
+/// and a 5 cm tall one topples long before it would slide. So on a flat
+/// bone ([`Rocking::rigid`]) the normal deviations get the stiffest spring
+/// the explicit integrator carries stably, whatever γ: the patch acts as a
+/// rigid support, and [`push_only`] keeps every sample's push ≥ 0, so the
+/// pressure can move only within the patch, as on a real face. A finger's
+/// pad is round, and an object rolls on it: its patch stays soft
+/// ([`Rocking::soft`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rocking {
+    /// The patch's total normal stiffness against rocking (N/m), k/N per
+    /// sample; at least γ.
+    pub stiffness: f32,
+    /// The damping of that motion, as stretch per unit rate (s).
+    pub lag: f32,
+    /// Whether each sample's normal deviation is held to `f_n/k`, so that
+    /// its push stays within [0, 2f_n/N] (soft pads).
+    pub clamped: bool,
+}
+
+impl Rocking {
+    /// The deviation springs of a soft pad: γ/N, damped as the contact.
+    pub fn soft(object: &ObjectView) -> Rocking {
+        let lag = if object.gamma > 0.0 { object.damping / object.gamma } else { 0.0 };
+        Rocking { stiffness: object.gamma, lag, clamped: true }
+    }
+
+    /// The rocking springs of a patch of `samples` on a ring of `radius`
+    /// (m). Their mean is removed, so they only turn the object: about a
+    /// tangent axis they make a rotational stiffness `K = (k/N)·Σx²`, with
+    /// `Σx² = (N − 1)·r²/2` over the ring. K is set to
+    /// `ROCKING_SHARE · I_min / dt²` shared by the object's contacts, and
+    /// damped at the contacts' damping ratio.
+    pub fn rigid(
+        object: &ObjectView,
+        samples: usize,
+        radius: f32,
+        settings: &LawSettings,
+    ) -> Rocking {
+        let ring = samples.saturating_sub(1) as f32 * radius * radius / 2.0;
+        let dt2 = settings.dt * settings.dt;
+        let turning = ROCKING_SHARE / (object.sharing * dt2 * object.inv_inertia);
+        let rigid = samples as f32 * turning / ring;
+        if !(rigid.is_finite() && rigid > object.gamma) {
+            return Rocking::soft(object);
+        }
+        // Critical damping of K on I is 2√(K·I); ζ of it, per unit of K.
+        let share = ROCKING_SHARE / object.sharing;
+        let lag = 2.0 * settings.damping_ratio * settings.dt / share.sqrt();
+        Rocking { stiffness: rigid, lag, clamped: false }
+    }
+}
+
+/// Skin pushes and never pulls: each sample's push along `−n` (`n` the
+/// object's outward normal) is held to ≥ 0, and the pushes are rescaled to
+/// keep their sum, so the patch still transmits exactly the contact's
+/// force. A box rocking over the patch's edge then rests on its downhill
+/// samples alone, its pressure up to 0.8 of the ring's radius from C, as a
+/// real face's moves towards its edge; a sample that would pull is let go.
+pub fn push_only(forces: &mut [Vec3], n: Vec3) {
+    let total: f32 = forces.iter().map(|f| -f.dot(n)).sum();
+    let pressing: f32 = forces.iter().map(|f| (-f.dot(n)).max(0.0)).sum();
+    if total <= 0.0 || pressing <= total {
+        return; // nothing pulls, or nothing presses
+    }
+    let scale = total / pressing;
+    for f in forces.iter_mut() {
+        let push = -f.dot(n);
+        *f -= (push.max(0.0) * scale - push) * n;
+    }
 }
 
 /// A contact's patch as one step sees it (world).
@@ -82,6 +194,7 @@ pub(crate) struct PatchStep {
     pub gamma: f32,
     pub damping: f32,
     pub mu: FrictionCoefficients,
+    pub rocking: Rocking,
 }
 
 /// Buffers reused from step to step.
@@ -95,8 +208,8 @@ pub(crate) struct PatchScratch {
 }
 
 /// Spreads a contact's force over its skin patch: each sample keeps its
-/// share of the force plus its deviation spring, limited by its own share
-/// of the friction cone (a sample beyond it slips by the slip rule, which
+/// share of the force plus its deviation spring (tangential γ/N, normal
+/// [`Rocking`]), limited by its own share of the friction cone (a sample beyond it slips by the slip rule, which
 /// is how a patch slips in torsion). Writes the samples' world points to
 /// `points` and appends `(force on the object, point)` per sample to
 /// `scratch.applied`.
@@ -113,14 +226,17 @@ pub(crate) fn spread(
     let object_rot = Mat3::from_quat(pose.rotation);
     // Damping of the deviations, folded in as extra stretch c/γ · ė.
     let lag = if step.gamma > 0.0 { step.damping / step.gamma } else { 0.0 };
-    let normal_limit = step.normal_force / step.gamma;
+    let rocking = step.rocking;
+    let normal_limit = step.normal_force / rocking.stiffness;
+    let rock = rocking.stiffness / step.gamma;
     scratch.deviations.clear();
     points.clear();
     for (ci_local, skin) in anchor.samples.iter_mut() {
         let mut ci = pose.translation + object_rot * *ci_local;
         let rest = c + step.skin * *skin;
         let e = ci - rest;
-        let e_n = e.dot(n).clamp(-normal_limit, normal_limit);
+        let e_n =
+            if rocking.clamped { e.dot(n).clamp(-normal_limit, normal_limit) } else { e.dot(n) };
         let mut e_t = e - e.dot(n) * n;
         if slips(e_t, step.normal_force, step.mu, step.gamma) {
             // This sample slips: its object point moves along the surface.
@@ -129,10 +245,15 @@ pub(crate) fn spread(
             *ci_local = pose.inverse_transform_point(ci);
         }
         let e_rate = object.angvel.cross(ci - c) - step.skin_rate * *skin;
-        scratch.deviations.push(e_t + e_n * n + lag * e_rate);
+        let rate_n = e_rate.dot(n);
+        let rate_t = e_rate - rate_n * n;
+        // Scaled so that γ/N times it is the rocking spring k/N on e_n.
+        let rocking_stretch = rock * (e_n + rocking.lag * rate_n);
+        scratch.deviations.push(e_t + lag * rate_t + rocking_stretch * n);
         points.push(ci);
     }
     sample_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.sample_forces);
+    push_only(&mut scratch.sample_forces, n);
     let forces = scratch.sample_forces.iter().copied();
     scratch.applied.extend(forces.zip(points.iter().copied()));
 }

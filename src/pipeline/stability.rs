@@ -20,11 +20,14 @@ use crate::friction;
 pub(crate) struct StabilityScale {
     pub stiffness: f32,
     pub damping: f32,
+    /// How many hand contacts share the object this step (≥ 1 where any
+    /// does): they share the budget of the patches' rocking springs too.
+    pub contacts: u32,
 }
 
 impl StabilityScale {
     /// No limit: the object's own γ and damping.
-    pub const NONE: StabilityScale = StabilityScale { stiffness: 1.0, damping: 1.0 };
+    pub const NONE: StabilityScale = StabilityScale { stiffness: 1.0, damping: 1.0, contacts: 1 };
 }
 
 impl InteractionWorld {
@@ -38,7 +41,8 @@ impl InteractionWorld {
     pub(super) fn stability_limits(&mut self, step: &mut StepScratch) {
         let dt = self.config.dt;
         step.limits.clear();
-        step.limits.resize(self.objects.len(), StabilityScale { stiffness: 0.0, damping: 0.0 });
+        let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };
+        step.limits.resize(self.objects.len(), none);
         for c in &step.candidates {
             let o = c.contact.object.0 as usize;
             let slot = &self.objects[o];
@@ -49,6 +53,7 @@ impl InteractionWorld {
             let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
             step.limits[o].stiffness += slot.gamma * w;
             step.limits[o].damping += self.nominal_damping(slot) * w;
+            step.limits[o].contacts += 1;
         }
         for limit in step.limits.iter_mut() {
             // The sums become the factors that keep them ≤ 1.

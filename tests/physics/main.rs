@@ -2,6 +2,7 @@
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
 mod energy;
+mod flat;
 mod grasp;
 mod lifecycle;
 mod live;

@@ -240,3 +240,44 @@ fn nine_samples_resist_twisting_that_one_sample_does_not() {
     );
     assert!(one > 45.0, "1 sample: turned only {one:.1}°");
 }
+
+#[test]
+fn the_pinch_threshold_is_coulombs_within_3_percent() {
+    // Squeezed at 1.4 times Coulomb's threshold by a skin of μ_st 0.63,
+    // then opened slowly (the squeeze falls 20 % a second): the box must
+    // start to slip when μ_st·Σf_n has fallen to its weight m g.
+    let mu_st = 0.63;
+    let grippy = Material::custom("grippy", mu_st, 0.52, 0.5);
+    let start_depth = 1.4 * MASS * 9.81 / (2.0 * mu_st * 400.0);
+    let mut p = pinch_with(InteractionConfig::default(), start_depth, grippy);
+    let depth_at = |t: f64| start_depth * (1.0 - 0.2 * (t as f32 - 0.5).max(0.0));
+    let poses = p.poses.clone();
+    let pose_at = |i: usize, t: f64| {
+        let mut pose = poses[i].clone();
+        let s = if i == 0 { -1.0 } else { 1.0 };
+        let x = s * (HALF + RADIUS - depth_at(t));
+        let capsule =
+            Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
+        set_bone(&mut pose, INDEX_DISTAL, capsule);
+        pose
+    };
+    let mut squeeze_at_slip = None;
+    let mut watch = |step: &StepView| {
+        let contacts = step.world.contacts();
+        if squeeze_at_slip.is_none() && contacts.iter().any(|c| c.state == FrictionState::Dynamic) {
+            let squeeze: f32 = contacts.iter().map(|c| c.normal_force).sum();
+            squeeze_at_slip = Some((step.t, squeeze));
+        }
+        Ok(())
+    };
+    let mut driver = Driver::new(&mut p.world);
+    for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+        let pose = &pose_at;
+        driver.drive(p.hands[i], PoseFn::new(side, move |t| Some(pose(i, t)))).unwrap();
+    }
+    driver.run(3000, &mut [&mut watch]).unwrap();
+    let (t, squeeze) = squeeze_at_slip.expect("the box slipped as the fingers opened");
+    let ratio = MASS * 9.81 / (mu_st * squeeze);
+    assert!(t > 1.0, "slipped at {t} s, before the squeeze fell below 1.4× the threshold");
+    assert!((ratio - 1.0).abs() < 0.03, "slipped when m g = {ratio:.4} μ_st Σf_n");
+}

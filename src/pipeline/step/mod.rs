@@ -100,6 +100,8 @@ impl InteractionWorld {
             linvel: body.linvel(),
             angvel: body.angvel(),
             center_of_mass: body.center_of_mass(),
+            inv_inertia: body.mass_properties().local_mprops.inv_principal_inertia.max_element(),
+            sharing: limit.contacts.max(1) as f32,
             gamma: slot.gamma * limit.stiffness,
             damping: self.nominal_damping(slot) * limit.damping,
             cap: self.config.force_cap.then(|| ForceCap::for_diameter(slot.diameter)),
@@ -166,6 +168,7 @@ impl StepScratch {
             max_penetration_speed: config.max_penetration_speed,
             probe_offset: config.probe_offset,
             patch: config.patch,
+            damping_ratio: config.damping_ratio.unwrap_or(0.0),
         };
         StepScratch { detector, settings, ..StepScratch::default() }
     }
