@@ -244,18 +244,19 @@ impl Contact {
     fn reaction(&mut self, at: &Site, object: &ObjectView, settings: &LawSettings) -> Reaction {
         let depth = (at.c - at.p).dot(at.n);
         let object_velocity = object.velocity_at(at.c);
+        let mut bone_velocity = (at.p - at.p_prev) / settings.dt;
         let limited = match settings.max_penetration_speed {
             Some(v) => {
                 let approach = object_velocity.dot(at.n);
+                let bone_speed = -bone_velocity.dot(at.n);
                 let previous = self.anchor.limited_depth;
-                friction::speed_limited_depth(depth, previous, approach, v, settings.dt)
+                friction::speed_limited_depth(depth, previous, approach, bone_speed, v, settings.dt)
             }
             None => depth,
         };
         self.anchor.limited_depth = limited.max(0.0);
         let seen_depth = object.cap.map_or(limited, |cap| cap.depth(limited));
         let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, seen_depth);
-        let mut bone_velocity = (at.p - at.p_prev) / settings.dt;
         if let Some(v) = settings.max_penetration_speed {
             bone_velocity = friction::limited_bone_velocity(bone_velocity, at.n, v);
         }

@@ -8,23 +8,34 @@ use super::gamma::MAX_PENETRATION_FRACTION;
 use super::law::spring_force;
 use glam::Vec3;
 
-/// The penetration-speed limit: the depth the spring sees (m) may grow by
-/// at most `max_speed` (m/s) beyond what the object's own approach towards
-/// the bone adds (`approach_speed`, m/s, counted only when positive), from
-/// `previous`, the limited depth of the last step. A bone that jumps deep
-/// inside ramps in like a finger pressing at `max_speed` instead of
-/// releasing the whole spring at once; an object falling onto a hand meets
-/// the full spring.
+/// The penetration-speed limit on the depth the spring sees (m), from
+/// `previous`, the limited depth of the last step. Speeds in m/s along the
+/// contact normal: `approach_speed` is the object's, towards the bone;
+/// `bone_speed` is the bone's, into the object.
+///
+/// Think of a virtual bone that the spring sees, chasing the tracked one:
+/// * it sinks into the object at most `max_speed` faster than the object
+///   comes at it, so a bone that jumps deep inside ramps in like a finger
+///   pressing at `max_speed`, while an object falling onto a hand meets
+///   the full spring;
+/// * it moves, in the world, no faster than `max_speed` or the tracked
+///   bone itself. A bone left deep inside an object by a glitch therefore
+///   pushes it away no faster than `max_speed`, however light it is, where
+///   a limit relative to the object alone would chase it at `max_speed`
+///   plus its own growing speed. A hand that really swings fast still
+///   pushes as fast as it moves.
 #[inline]
 pub fn speed_limited_depth(
     depth: f32,
     previous: f32,
     approach_speed: f32,
+    bone_speed: f32,
     max_speed: f32,
     dt: f32,
 ) -> f32 {
-    let approach = approach_speed.max(0.0);
-    depth.min(previous + (max_speed + approach) * dt)
+    let into_object = max_speed + approach_speed.max(0.0);
+    let in_world = approach_speed + max_speed.max(bone_speed);
+    depth.min(previous + into_object.min(in_world) * dt)
 }
 
 /// The bone's velocity (m/s) with its speed into the object (along `−n`)
@@ -112,16 +123,26 @@ mod tests {
     fn a_jump_ramps_in_at_the_speed_limit_but_an_approaching_object_does_not() {
         // A bone 30 mm deep at once, 1 m/s limit, 1 ms steps: 1 mm a step.
         let mut seen = 0.0;
-        for _ in 0..3 {
-            seen = speed_limited_depth(0.03, seen, 0.0, 1.0, 0.001);
+        for bone_speed in [30.0, 0.0, 0.0] {
+            seen = speed_limited_depth(0.03, seen, 0.0, bone_speed, 1.0, 0.001);
         }
         assert!((seen - 0.003).abs() < 1e-7, "{seen}");
         // An object arriving at 2.5 m/s adds its own approach.
-        assert!((speed_limited_depth(0.03, 0.0, 2.5, 1.0, 0.001) - 0.0035).abs() < 1e-7);
-        // A receding object does not lower the limit below the bone's own.
-        assert!((speed_limited_depth(0.03, 0.0, -4.0, 1.0, 0.001) - 0.001).abs() < 1e-7);
+        assert!((speed_limited_depth(0.03, 0.0, 2.5, 0.0, 1.0, 0.001) - 0.0035).abs() < 1e-7);
         // A shallow bone is seen as it is.
-        assert_eq!(speed_limited_depth(0.0004, 0.0, 0.0, 1.0, 0.001), 0.0004);
+        assert_eq!(speed_limited_depth(0.0004, 0.0, 0.0, 0.0, 1.0, 0.001), 0.0004);
+    }
+
+    #[test]
+    fn a_bone_left_deep_inside_pushes_a_receding_object_no_faster_than_the_limit() {
+        // The object already flees at 1.5 m/s from a still bone 20 mm
+        // inside: the spring's depth shrinks by 0.5 mm a step.
+        let seen = speed_limited_depth(0.02, 0.004, -1.5, 0.0, 1.0, 0.001);
+        assert!((seen - 0.0035).abs() < 1e-7, "{seen}");
+        // A bone that really pushes at 3 m/s keeps up with an object
+        // receding at 2.8 m/s: its depth may still grow.
+        let pushed = speed_limited_depth(0.02, 0.004, -2.8, 3.0, 1.0, 0.001);
+        assert!((pushed - 0.0042).abs() < 1e-7, "{pushed}");
     }
 
     #[test]

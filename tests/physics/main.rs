@@ -3,6 +3,7 @@
 
 mod energy;
 mod flat;
+mod glitch;
 mod grasp;
 mod lifecycle;
 mod live;
