@@ -139,3 +139,36 @@ fn a_scenario_hand_may_replay_a_recording() {
         .to_string();
     assert!(bad.contains("claps.json: hands[0].recording") && bad.contains("four-claps"), "{bad}");
 }
+
+#[test]
+fn the_contacts_measure_counts_only_contacts_that_press() {
+    // A palm facing down 2 mm above a 4 cm box on the floor is within the
+    // 4 mm contact offset: it has a contact, but it does not press, so the
+    // measure does not count it. Lowered 4 mm, 2 mm into the box, it presses.
+    let text = r#"{
+      "name": "hover", "duration": 0.5,
+      "scene": {"ground": {"height": 0.0, "friction": 0.5},
+                "objects": [{"name": "box", "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}},
+                             "mass": 0.05, "material": "wood", "position": [0.0, 0.02, 0.0]}]},
+      "hands": [{"side": "right",
+                 "keys": [{"t": 0.0, "palm": [0.0, 0.052, 0.0], "rotation_deg": [0, 0, 180]}]}],
+      "checks": [{"name": "pressing", "max": 0,
+                  "measure": {"kind": "contacts", "object": "box", "at": 0.5}}]
+    }"#;
+    let run_counting = |text: &str| {
+        let s = Scenario::parse("hover.json", text, Path::new(".")).unwrap();
+        let mut touching = 0;
+        let mut count = |step: &StepView| {
+            touching = step.world.contacts().len();
+            Ok(())
+        };
+        let report = s.run(&mut [&mut count]).unwrap();
+        (report, touching)
+    };
+    let (hover, touching) = run_counting(text);
+    assert!(touching >= 1, "the hovering palm has a contact");
+    assert!(hover.passed, "{}", table(&hover));
+    let pressing = text.replace("0.052", "0.048").replace(r#""max": 0"#, r#""min": 1"#);
+    let (press, _) = run_counting(&pressing);
+    assert!(press.passed, "{}", table(&press));
+}
