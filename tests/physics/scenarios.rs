@@ -1,13 +1,13 @@
 //! The shipped scenarios of the interaction catalogue (thesis Ch. 4): each
-//! must pass its own checks, and changing the physics that makes it work
-//! must make it fail.
+//! must pass its own checks (and `controls.rs`: changing the physics that
+//! makes it work must make it fail).
 
 use coulomb_hands::run::drive::StepView;
 use coulomb_hands::run::observe::trace_line;
 use coulomb_hands::run::scenario::{Scenario, ScenarioReport, shipped};
 use std::path::Path;
 
-fn run(s: &Scenario) -> ScenarioReport {
+pub fn run(s: &Scenario) -> ScenarioReport {
     let mut finite = |step: &StepView| {
         let line = trace_line(step);
         assert!(line.is_finite(), "{}: non-finite state at t = {}", s.name, line.t);
@@ -16,7 +16,7 @@ fn run(s: &Scenario) -> ScenarioReport {
     s.run(&mut [&mut finite]).unwrap()
 }
 
-fn table(r: &ScenarioReport) -> String {
+pub fn table(r: &ScenarioReport) -> String {
     r.checks
         .iter()
         .map(|c| {
@@ -44,72 +44,27 @@ fn every_shipped_scenario_passes_its_checks() {
 }
 
 /// The shipped scenario `name` with `from` replaced by `to` in its file.
-fn variant(name: &str, from: &str, to: &str) -> ScenarioReport {
-    let text = shipped().iter().find(|s| s.0 == name).unwrap().1;
-    assert!(text.contains(from), "{name} has no {from}");
-    run(&Scenario::parse(name, &text.replace(from, to), Path::new(".")).unwrap())
+pub fn variant(name: &str, from: &str, to: &str) -> ScenarioReport {
+    variants(name, &[(from, to)])
 }
 
-fn check<'a>(
+/// The shipped scenario `name` with each `from` replaced by its `to`.
+pub fn variants(name: &str, changes: &[(&str, &str)]) -> ScenarioReport {
+    let mut text = shipped().iter().find(|s| s.0 == name).unwrap().1.to_string();
+    for (from, to) in changes {
+        assert!(text.contains(from), "{name} has no {from}");
+        text = text.replace(from, to);
+    }
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    run(&Scenario::parse(name, &text, &dir).unwrap())
+}
+
+/// The first check of `r` whose name starts with `name`.
+pub fn check<'a>(
     r: &'a ScenarioReport,
     name: &str,
 ) -> &'a coulomb_hands::run::scenario::check::CheckResult {
     r.checks.iter().find(|c| c.name.starts_with(name)).unwrap()
-}
-
-#[test]
-fn without_the_physics_they_rely_on_the_scenarios_fail() {
-    // A grippy floor: finger friction can no longer drag the box.
-    let pull = variant("pull", r#""friction": 0.0"#, r#""friction": 1.0"#);
-    assert!(!check(&pull, "pulled").passed, "{}", table(&pull));
-    // A slippery floor under the wooden sculpture: it slides, not tips.
-    let tilt = variant("tilt-wooden", r#""friction": 1.0"#, r#""friction": 0.0"#);
-    assert!(!check(&tilt, "tipped").passed, "{}", table(&tilt));
-    // A grippy floor under the slippery push: now it tips.
-    let slide = variant("slide-slippery", r#""friction": 0.05}"#, r#""friction": 1.5}"#);
-    assert!(!slide.passed, "{}", table(&slide));
-    // A cube too slippery for the pinch's squeeze: it stays on the floor.
-    let slippery = r#"{"name": "ice", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05},
-                       "surface_friction": 0.5, "source": "test"}"#;
-    let grasp =
-        variant("grasp-lift", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
-    assert!(!check(&grasp, "lifted").passed, "{}", table(&grasp));
-    // Without the other hand's thumb there is nothing to balance against.
-    let alone =
-        variant("two-hand-balance", r#""curl": [0.5, 1, 1, 1, 1]"#, r#""curl": [0, 1, 1, 1, 1]"#);
-    assert!(!check(&alone, "lifted").passed, "{}", table(&alone));
-    // The spin needs the right finger's friction either side of the axis:
-    // a slippery cube slides under it and barely turns.
-    let ice =
-        variant("spin-two-hands", r#""material": "wood""#, &format!(r#""material": {slippery}"#));
-    assert!(!check(&ice, "spun").passed, "{}", table(&ice));
-    // The cross turns in one hand only because the fingertip pivots'
-    // friction holds it against the middle finger's push. A slicker cross
-    // (μ 0.2) is still lifted, and the first push still turns it, but the
-    // pivots let it go under the pushes: it is dropped.
-    let slick = r#"{"name": "slick", "skin": {"static_mu": 0.2, "dynamic_mu": 0.2},
-                    "surface_friction": 0.5, "source": "test"}"#;
-    let pushed_out =
-        variant("spin-one-hand", r#""material": "wood""#, &format!(r#""material": {slick}"#));
-    assert!(!check(&pushed_out, "lowest").passed, "{}", table(&pushed_out));
-    // A loose wrap round the mallet's handle: it is not held.
-    let loose = variant("tool-knock-tower", "0.9, 0.9, 0.9, 0.9", "0.6, 0.6, 0.6, 0.6");
-    assert!(!loose.passed, "{}", table(&loose));
-    // The same swing with the mallet elsewhere: the hand alone passes over
-    // the tower, which stands. It is the mallet that knocks it down.
-    let empty = variant(
-        "tool-knock-tower",
-        r#""position": [0.0, 0.02, 0.0]"#,
-        r#""position": [1.0, 0.02, 0.0]"#,
-    );
-    assert!(!check(&empty, "tower fell: top").passed, "{}", table(&empty));
-    // A hand too soft to hold the falling block: it falls through.
-    let catch = variant(
-        "catch",
-        r#""duration": 2.0,"#,
-        r#""duration": 2.0, "config": {"gamma": {"Fixed": 5.0}},"#,
-    );
-    assert!(!catch.passed, "{}", table(&catch));
 }
 
 #[test]
@@ -138,4 +93,37 @@ fn a_scenario_hand_may_replay_a_recording() {
         .unwrap_err()
         .to_string();
     assert!(bad.contains("claps.json: hands[0].recording") && bad.contains("four-claps"), "{bad}");
+}
+
+#[test]
+fn the_contacts_measure_counts_only_contacts_that_press() {
+    // A palm facing down 2 mm above a 4 cm box on the floor is within the
+    // 4 mm contact offset: it has a contact, but it does not press, so the
+    // measure does not count it. Lowered 4 mm, 2 mm into the box, it presses.
+    let text = r#"{
+      "name": "hover", "duration": 0.5,
+      "scene": {"ground": {"height": 0.0, "friction": 0.5},
+                "objects": [{"name": "box", "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}},
+                             "mass": 0.05, "material": "wood", "position": [0.0, 0.02, 0.0]}]},
+      "hands": [{"side": "right",
+                 "keys": [{"t": 0.0, "palm": [0.0, 0.052, 0.0], "rotation_deg": [0, 0, 180]}]}],
+      "checks": [{"name": "pressing", "max": 0,
+                  "measure": {"kind": "contacts", "object": "box", "at": 0.5}}]
+    }"#;
+    let run_counting = |text: &str| {
+        let s = Scenario::parse("hover.json", text, Path::new(".")).unwrap();
+        let mut touching = 0;
+        let mut count = |step: &StepView| {
+            touching = step.world.contacts().len();
+            Ok(())
+        };
+        let report = s.run(&mut [&mut count]).unwrap();
+        (report, touching)
+    };
+    let (hover, touching) = run_counting(text);
+    assert!(touching >= 1, "the hovering palm has a contact");
+    assert!(hover.passed, "{}", table(&hover));
+    let pressing = text.replace("0.052", "0.048").replace(r#""max": 0"#, r#""min": 1"#);
+    let (press, _) = run_counting(&pressing);
+    assert!(press.passed, "{}", table(&press));
 }

@@ -133,7 +133,15 @@ pub enum Measure {
         /// End time (s); `None` is the end of the run.
         to: Option<f32>,
     },
-    /// Hand contacts on the object at `at`.
+    /// Hand contacts that press on the object at `at`: those whose normal
+    /// force is positive, the first clause of Eq. 3.7 (`f · n > 0`; state
+    /// static or dynamic, not separated). A bone within the contact offset
+    /// that does not press has a contact but transmits no force, so it does
+    /// not count: two pressing contacts can squeeze, two touching ones
+    /// cannot. There is no threshold above zero: the spring has no dead band,
+    /// so a pressing contact carries force (γ times its depth) however
+    /// shallow; whether the forces are enough is what a scenario's other
+    /// checks (lifted, drift in the hand) test.
     Contacts {
         /// The object's name in the scene.
         object: String,
@@ -153,7 +161,8 @@ pub struct History {
     pub poses: Vec<Vec<(Vec3, Quat)>>,
     /// `speeds[step][object]`: speed after that step (m/s).
     pub speeds: Vec<Vec<f32>>,
-    /// `contacts[step][object]`: hand contacts on it after that step.
+    /// `contacts[step][object]`: hand contacts pressing on it (normal force
+    /// > 0) after that step.
     pub contacts: Vec<Vec<u32>>,
     /// `palms[step][hand]`: palm centre and rotation, if tracked.
     pub palms: Vec<Vec<Option<(Vec3, Quat)>>>,
@@ -367,7 +376,7 @@ impl Observer for History {
             speeds.push(s.linvel.length());
         }
         let mut contacts = vec![0u32; objects];
-        for c in world.contacts() {
+        for c in world.contacts().iter().filter(|c| c.normal_force > 0.0) {
             contacts[c.object.0 as usize] += 1;
         }
         let palm = |h: &crate::run::drive::HandFrame| {

@@ -31,7 +31,8 @@
 //!   or a Leap recording,
 //!   `{"recording": "path.json.lz", "offset": [x, y, z]}`, whose path is
 //!   relative to the scenario file.
-//! * `checks`: see [`check::Measure`] for what can be measured.
+//! * `checks`: see [`check::Measure`] for what can be measured; `contacts`
+//!   counts only the hand contacts that press (normal force > 0).
 //!
 //! Unknown fields are errors; every name, bound and key is checked before
 //! the run starts. The shipped scenarios are in `scenarios/` and built into
