@@ -2,12 +2,12 @@
 //! its hands and read what happened. One step is in [`super::step`].
 
 use super::config::InteractionConfig;
+use super::firewall;
 use super::record::{Call, Recorder};
 use super::step::StepScratch;
 use crate::contact::{Contact, ContactEvent};
-use crate::friction;
 use crate::hand::{HandId, HandPose, PoseError, Side};
-use crate::scene::{GammaMode, Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
+use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
 use rapier3d::prelude::{
@@ -98,7 +98,7 @@ pub struct InteractionWorld {
 impl InteractionWorld {
     /// An empty world.
     pub fn new(config: InteractionConfig) -> Result<Self, WorldError> {
-        config.validate()?;
+        firewall::config(&config)?;
         let mut physics = PhysicsWorld::new();
         physics.gravity = config.gravity;
         config.set_rapier_parameters(&mut physics.integration_parameters);
@@ -150,6 +150,7 @@ impl InteractionWorld {
     /// scripted set-up. Do not insert hand bones (a colliding bone would
     /// bypass the friction model), and do not remove the bodies or colliders
     /// of objects added with [`Self::add_object`]: the world indexes them.
+    /// What is written here bypasses the NaN firewall (`firewall.rs`).
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
         &mut self.physics
     }
@@ -161,7 +162,7 @@ impl InteractionWorld {
 
     /// Adds static scenery (ground, tables). Hands do not touch it.
     pub fn add_static(&mut self, desc: &StaticDesc) -> Result<ColliderHandle, WorldError> {
-        let shape = desc.validate()?;
+        let shape = firewall::fixed(desc)?;
         let collider = ColliderBuilder::new(shape)
             .position(Pose::from_parts(desc.position, desc.rotation))
             .friction(desc.friction);
@@ -188,19 +189,8 @@ impl InteractionWorld {
 
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
-        let shape = desc.validate()?;
-        let diameter = 2.0 * shape.compute_local_bounding_sphere().radius();
-        let gamma = match desc.gamma.unwrap_or(self.config.gamma) {
-            GammaMode::Fixed(g) => g,
-            GammaMode::Auto => {
-                let (mass, mu) = (desc.mass, desc.material.skin.static_mu);
-                friction::auto_gamma(mass, self.config.gravity.length(), mu, diameter)
-            }
-        };
-        if !(gamma.is_finite() && gamma > 0.0) {
-            let why = format!("automatic γ is {gamma}: needs gravity, μ_st and size > 0");
-            return Err(ObjectError::new(&desc.name, "gamma", why).into());
-        }
+        let firewall::Admitted { shape, gamma, diameter } =
+            firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
         let pose = Pose::from_parts(desc.position, desc.rotation);
         let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose));
         let collider =
@@ -253,7 +243,7 @@ impl InteractionWorld {
     /// A rejected pose leaves the world untouched.
     pub fn set_hand_pose(&mut self, hand: HandId, pose: &HandPose) -> Result<(), WorldError> {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
-        pose.validate(hand.0)?;
+        firewall::pose(hand.0, pose)?;
         slot.pose = Some(pose.clone());
         self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
         Ok(())

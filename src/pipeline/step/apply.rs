@@ -2,6 +2,7 @@
 
 use crate::friction;
 use crate::pipeline::InteractionWorld;
+use crate::pipeline::firewall;
 use crate::scene::ObjectId;
 use glam::Vec3;
 
@@ -14,7 +15,7 @@ impl InteractionWorld {
     pub(super) fn apply_forces(&mut self, object: ObjectId, forces: &[(Vec3, Vec3)]) {
         let slot = &mut self.objects[object.0 as usize];
         let body = &mut self.physics.bodies[slot.body];
-        let finite = forces.iter().filter(|(f, at)| f.is_finite() && at.is_finite());
+        let finite = firewall::forces(forces);
         // One pass: each force is applied as it is added to the total.
         slot.hand_force = friction::total_force(
             slot.hand_force,
