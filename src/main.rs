@@ -257,6 +257,12 @@ fn replay(args: ReplayArgs) -> Result<(), RunError> {
         "frames: {}, hands: {}, duration: {:.2} s, physics steps: {}",
         summary.frames, summary.hands, summary.duration, summary.steps
     );
+    if !summary.skipped.is_empty() {
+        println!("left out {} tracking glitches:", summary.skipped.len());
+        for line in &summary.skipped {
+            println!("  {line}");
+        }
+    }
     if let Some(s) = site {
         println!(
             "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",

@@ -1,11 +1,23 @@
 //! Plays tracking frames back on the physics clock: hand poses are
 //! interpolated between frames, short dropouts are bridged, and a hand that
 //! stays lost longer than the grace period is reported as untracked.
+//!
+//! Trackers glitch, and one glitch must not cost the whole recording. What
+//! playback leaves out, it lists in [`Playback::skipped`]:
+//! * a frame whose timestamp goes backwards (a stale frame);
+//! * a second hand with the same id and side in one frame;
+//! * a hand with a collapsed bone (its joints coincide): its neighbours are
+//!   interpolated across it, as across a dropout.
+//!
+//! A hand whose id keeps but whose side flips starts a new track (the
+//! tracker's left and right are separate hands). Everything else that is
+//! wrong (a number that is not finite, a joint out of range) is an error
+//! naming the frame and the field.
 
 use super::convert::Conversion;
 use super::skeleton::hand_pose;
 use super::{InputError, TrackingFrame};
-use crate::hand::{HandSample, Side};
+use crate::hand::{HandSample, PoseError, Side};
 
 /// One hand's tracked samples, in time order.
 #[derive(Debug, Clone)]
@@ -30,14 +42,37 @@ pub struct Playback {
     /// A gap between two samples of a hand up to this long (s) is bridged
     /// by interpolation; a longer one means the hand was lost.
     pub grace: f64,
+    /// What was left out, in frame order.
+    pub skipped: Vec<Skipped>,
+}
+
+/// A frame, or one hand of a frame, that playback left out.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Skipped {
+    /// The frame's index in the recording.
+    pub frame: usize,
+    /// The hand's index in the frame, or `None` for the whole frame.
+    pub hand: Option<usize>,
+    /// Why.
+    pub reason: String,
+}
+
+impl std::fmt::Display for Skipped {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.hand {
+            Some(h) => write!(f, "frame {} hands[{h}]: {}", self.frame, self.reason),
+            None => write!(f, "frame {}: {}", self.frame, self.reason),
+        }
+    }
 }
 
 /// The default grace period for tracking dropouts (s).
 pub const DEFAULT_GRACE: f64 = 0.1;
 
 impl Playback {
-    /// Converts every hand of every frame; any bad frame is an error naming
-    /// the frame. Timestamps must not go backwards.
+    /// Converts every hand of every frame, leaving out and listing the
+    /// glitches of the module doc; any other bad frame is an error naming
+    /// the frame.
     pub fn new(
         source: &str,
         frames: &[TrackingFrame],
@@ -52,19 +87,36 @@ impl Playback {
         };
         let start = frames.first().map_or(0, |f| f.timestamp_us);
         let mut tracks: Vec<Track> = Vec::new();
+        let mut skipped = Vec::new();
         let mut last = start;
         for (i, frame) in frames.iter().enumerate() {
             if frame.timestamp_us < last {
-                let why = format!("goes backwards ({} after {last})", frame.timestamp_us);
-                return Err(fail(i, "timestamp".into(), why));
+                let reason =
+                    format!("timestamp goes backwards ({} after {last})", frame.timestamp_us);
+                skipped.push(Skipped { frame: i, hand: None, reason });
+                continue;
             }
             last = frame.timestamp_us;
             let t = (frame.timestamp_us - start) as f64 * 1e-6;
+            let mut seen: Vec<(i64, Side)> = Vec::with_capacity(frame.hands.len());
             for (h, hand) in frame.hands.iter().enumerate() {
+                if seen.contains(&(hand.id, hand.side)) {
+                    let reason = format!("another {:?} hand with id {}", hand.side, hand.id);
+                    skipped.push(Skipped { frame: i, hand: Some(h), reason });
+                    continue;
+                }
+                seen.push((hand.id, hand.side));
                 let bad = |e: String| fail(i, format!("hands[{h}]"), e);
                 let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
-                pose.validate(0).map_err(|e| bad(e.to_string()))?;
-                let k = tracks.iter().position(|tr| tr.id == hand.id).unwrap_or_else(|| {
+                match pose.validate(0) {
+                    Err(e @ PoseError::ZeroLength { .. }) => {
+                        skipped.push(Skipped { frame: i, hand: Some(h), reason: e.to_string() });
+                        continue;
+                    }
+                    result => result.map_err(|e| bad(e.to_string()))?,
+                }
+                let key = |tr: &Track| tr.id == hand.id && tr.side == hand.side;
+                let k = tracks.iter().position(key).unwrap_or_else(|| {
                     tracks.push(Track { id: hand.id, side: hand.side, samples: Vec::new() });
                     tracks.len() - 1
                 });
@@ -72,7 +124,8 @@ impl Playback {
                 tracks[k].samples.push((t, sample));
             }
         }
-        Ok(Playback { tracks, duration: (last - start) as f64 * 1e-6, frames: frames.len(), grace })
+        let duration = (last - start) as f64 * 1e-6;
+        Ok(Playback { tracks, duration, frames: frames.len(), grace, skipped })
     }
 
     /// The state of track `index` at time `t` (s), or `None` while untracked.

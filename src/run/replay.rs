@@ -30,6 +30,9 @@ pub struct ReplaySummary {
     pub objects: Vec<ObjectSummary>,
     /// True when every traced number was finite.
     pub all_finite: bool,
+    /// The frames and hands playback left out, one line each
+    /// ([`crate::input::playback::Skipped`]).
+    pub skipped: Vec<String>,
 }
 
 /// A world to replay into, with a ground at y = 0, recording its session
@@ -218,5 +221,6 @@ pub fn replay(
         contacts_begun: summary.contacts_begun,
         objects: summary.objects(driver.world())?,
         all_finite: summary.all_finite,
+        skipped: playback.skipped.iter().map(ToString::to_string).collect(),
     })
 }

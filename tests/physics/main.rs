@@ -15,6 +15,7 @@ mod recordings;
 mod safety;
 mod scenarios;
 mod tilt;
+mod tracking;
 
 use coulomb_hands::hand::rig::HandRig;
 pub use coulomb_hands::run::drive::{Driver, PoseFn, StepView};

@@ -281,3 +281,46 @@ fn the_pinch_threshold_is_coulombs_within_3_percent() {
     assert!(t > 1.0, "slipped at {t} s, before the squeeze fell below 1.4× the threshold");
     assert!((ratio - 1.0).abs() < 0.03, "slipped when m g = {ratio:.4} μ_st Σf_n");
 }
+
+#[test]
+fn releasing_a_two_handed_hold_one_hand_then_the_other_flings_nothing() {
+    // Ultraleap's UnityPlugin #846: let go with one hand of a two-handed
+    // hold, then quickly with the other, and a kinematic grab flings the
+    // object. Here the box is squeezed at 2.5 times Coulomb's threshold by
+    // two still hands; the left finger snaps 3 cm away in 10 ms, the right
+    // one 40 ms later. The right finger's spring, no longer opposed, may
+    // push the box sideways only with what it stored: ½γδ² for δ = 15 mm
+    // is 0.6 m/s at most on 50 g, and its damper takes some of that.
+    let depth = depth_for(2.5, 400.0);
+    let mut p = pinch(InteractionConfig::default(), depth);
+    let poses = p.poses.clone();
+    let away = |i: usize, t: f64, from: f64| {
+        let mut pose = poses[i].clone();
+        let s = if i == 0 { -1.0 } else { 1.0 };
+        let open = 0.03 * ((t - from) / 0.01).clamp(0.0, 1.0) as f32;
+        let x = s * (HALF + RADIUS - depth + open);
+        let capsule =
+            Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
+        set_bone(&mut pose, INDEX_DISTAL, capsule);
+        pose
+    };
+    let (box_id, mut sideways, mut held_until) = (p.box_id, 0.0f32, 0.0);
+    let mut watch = |step: &StepView| {
+        let v = step.world.object_state(box_id).unwrap().linvel;
+        sideways = sideways.max(Vec3::new(v.x, 0.0, v.z).length());
+        if step.world.contacts().len() == 2 {
+            held_until = step.t;
+        }
+        Ok(())
+    };
+    let mut driver = Driver::new(&mut p.world);
+    let release = [0.5, 0.54];
+    for (i, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+        let away = &away;
+        driver.drive(p.hands[i], PoseFn::new(side, move |t| Some(away(i, t, release[i])))).unwrap();
+    }
+    driver.run(1000, &mut [&mut watch]).unwrap();
+    assert!(held_until >= 0.5, "the box was held by both hands until the release");
+    assert!(sideways < 1.0, "the release flung the box sideways at {sideways:.2} m/s");
+    assert!(p.world.contacts().is_empty(), "both fingers let go");
+}
