@@ -35,9 +35,14 @@ pub struct Playback {
 /// The default grace period for tracking dropouts (s).
 pub const DEFAULT_GRACE: f64 = 0.1;
 
+/// The longest recording replayed (s): one hour. Later timestamps are
+/// taken for corrupt data, as a replay of them would not end.
+pub const MAX_DURATION: f64 = 3600.0;
+
 impl Playback {
     /// Converts every hand of every frame; any bad frame is an error naming
-    /// the frame. Timestamps must not go backwards.
+    /// the frame. Timestamps must not go backwards, nor run past
+    /// [`MAX_DURATION`] from the first.
     pub fn new(
         source: &str,
         frames: &[TrackingFrame],
@@ -59,11 +64,20 @@ impl Playback {
                 return Err(fail(i, "timestamp".into(), why));
             }
             last = frame.timestamp_us;
-            let t = (frame.timestamp_us - start) as f64 * 1e-6;
+            let t =
+                frame.timestamp_us.checked_sub(start).map_or(f64::INFINITY, |d| d as f64 * 1e-6);
+            if t > MAX_DURATION {
+                let why = format!(
+                    "{} µs is more than {MAX_DURATION} s (the longest recording replayed) \
+                     after the first frame's {start} µs",
+                    frame.timestamp_us
+                );
+                return Err(fail(i, "timestamp".into(), why));
+            }
             for (h, hand) in frame.hands.iter().enumerate() {
                 let bad = |e: String| fail(i, format!("hands[{h}]"), e);
                 let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
-                pose.validate(0).map_err(|e| bad(e.to_string()))?;
+                pose.validate(h as u32).map_err(|e| bad(e.to_string()))?;
                 let k = tracks.iter().position(|tr| tr.id == hand.id).unwrap_or_else(|| {
                     tracks.push(Track { id: hand.id, side: hand.side, samples: Vec::new() });
                     tracks.len() - 1
