@@ -28,8 +28,15 @@ impl FileError {
     /// Parses JSON text of `file`; a syntax or schema error gives its line
     /// and column.
     pub fn json<T: serde::de::DeserializeOwned>(file: &str, text: &str) -> Result<T, FileError> {
-        serde_json::from_str(text).map_err(|e| {
-            FileError::new(file, format!("line {} column {}: {e}", e.line(), e.column()))
-        })
+        serde_json::from_str(text).map_err(|e| FileError::new(file, json_reason(&e)))
     }
+}
+
+/// A JSON error as `line L column C: what`, its place said once (serde's
+/// own message ends with the place too).
+pub fn json_reason(e: &serde_json::Error) -> String {
+    let message = e.to_string();
+    let place = format!(" at line {} column {}", e.line(), e.column());
+    let what = message.strip_suffix(&place).unwrap_or(&message);
+    format!("line {} column {}: {what}", e.line(), e.column())
 }

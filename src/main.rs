@@ -193,7 +193,7 @@ fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
         .split(',')
         .map(|p| p.trim().parse::<f32>())
         .collect::<Result<_, _>>()
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| format!("expected three finite numbers \"x,y,z\", got \"{s}\" ({e})"))?;
     match v.as_slice() {
         [x, y, z] if v.iter().all(|c| c.is_finite()) => Ok(glam::Vec3::new(*x, *y, *z)),
         _ => Err(format!("expected three finite numbers \"x,y,z\", got \"{s}\"")),
@@ -280,9 +280,9 @@ fn replay(args: ReplayArgs) -> Result<(), RunError> {
     Ok(())
 }
 
-/// A buffered output file.
-fn create(path: &std::path::Path) -> Result<std::io::BufWriter<std::fs::File>, RunError> {
-    Ok(std::io::BufWriter::new(std::fs::File::create(path)?))
+/// A buffered output file; its errors name it.
+fn create(path: &std::path::Path) -> Result<coulomb_hands::output::trace::TraceFile, RunError> {
+    Ok(coulomb_hands::output::trace::TraceFile::create(path)?)
 }
 
 fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), RunError> {
@@ -305,14 +305,15 @@ fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
     let session = Session::load(file)?;
     // Objects are followed from the end of the first step, when all exist.
     let mut summary: Option<Result<Summary, coulomb_hands::WorldError>> = None;
-    let world = session.replay(|w| {
+    let replayed = session.replay(|w| {
         let s = summary.get_or_insert_with(|| Summary::new(w));
         if let Ok(s) = s
             && let Err(e) = s.observe_world(w)
         {
             summary = Some(Err(e));
         }
-    })?;
+    });
+    let world = replayed.map_err(|e| e.in_file(file))?;
     let objects = match summary.transpose()? {
         Some(s) => s.objects(&world)?,
         None => Vec::new(),
@@ -355,13 +356,14 @@ fn bench(steps: usize, boxes: usize, tower: bool) -> Result<(), String> {
     Ok(())
 }
 
-/// Runs one scenario or all shipped ones. `Ok(false)` when a check failed.
+/// Runs one scenario or all shipped ones. Returns the failed checks, as
+/// `scenario: check`.
 fn scenario(
     name: Option<&str>,
     all: bool,
     trace: Option<&std::path::Path>,
     json: bool,
-) -> Result<bool, RunError> {
+) -> Result<Vec<String>, RunError> {
     use coulomb_hands::run::observe::TraceWriter;
     use coulomb_hands::run::scenario::{Scenario, shipped};
     let names: Vec<String> = match name {
@@ -397,11 +399,15 @@ fn scenario(
     if let Some(w) = writer {
         w.finish()?;
     }
-    let passed = reports.iter().all(|r| r.0.passed);
+    let failed: Vec<String> = reports
+        .iter()
+        .flat_map(|(r, ..)| r.checks.iter().filter(|c| !c.passed).map(|c| (&r.name, &c.name)))
+        .map(|(scenario, check)| format!("{scenario}: {check}"))
+        .collect();
     if json {
         let list: Vec<_> = reports.iter().map(|r| &r.0).collect();
         println!("{}", serde_json::json!({ "scenarios": list }));
-        return Ok(passed);
+        return Ok(failed);
     }
     if all {
         println!("{:<20} {:<6} {:>7}  failed checks", "scenario", "result", "wall[s]");
@@ -429,16 +435,19 @@ fn scenario(
             println!("{} in {wall:.2} s", if r.passed { "passed" } else { "FAILED" });
         }
     }
-    Ok(passed)
+    Ok(failed)
 }
 
 /// Writes `mesh::generate::shipped()` as OBJ files into `out`.
 fn write_meshes(out: &std::path::Path) -> std::io::Result<()> {
     use coulomb_hands::scene::mesh::generate::{header, shipped};
-    std::fs::create_dir_all(out)?;
+    let named = |path: &std::path::Path, e: std::io::Error| {
+        std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+    };
+    std::fs::create_dir_all(out).map_err(|e| named(out, e))?;
     for (name, mesh) in shipped() {
         let path = out.join(format!("{name}.obj"));
-        std::fs::write(&path, mesh.to_obj(&header(name)))?;
+        std::fs::write(&path, mesh.to_obj(&header(name))).map_err(|e| named(&path, e))?;
         println!("wrote {} ({} triangles)", path.display(), mesh.triangles.len());
     }
     Ok(())
@@ -456,8 +465,8 @@ fn main() -> ExitCode {
         Command::Mesh { out } => write_meshes(&out).map_err(|e| e.to_string()),
         Command::Scenario { scenario: name, all, trace, json } => {
             match scenario(name.as_deref(), all, trace.as_deref(), json) {
-                Ok(true) => Ok(()),
-                Ok(false) => Err("a scenario check failed".into()),
+                Ok(failed) if failed.is_empty() => Ok(()),
+                Ok(failed) => Err(format!("failed checks: {}", failed.join("; "))),
                 Err(e) => Err(e.to_string()),
             }
         }

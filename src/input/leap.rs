@@ -65,12 +65,7 @@ pub fn parse(source: &str, text: &str) -> Result<LeapRecording, InputError> {
             .map_err(|_| err(source, None, "lz-string", "decompressed data is not valid text"))?
     };
     let root: Value = serde_json::from_str(&json).map_err(|e| {
-        err(
-            source,
-            None,
-            "json",
-            format!("invalid JSON at line {} column {}: {e}", e.line(), e.column()),
-        )
+        err(source, None, "json", format!("invalid JSON, {}", crate::file_error::json_reason(&e)))
     })?;
     from_json(source, &root)
 }
@@ -152,9 +147,10 @@ fn unpack(source: &str, index: usize, header: &Value, packed: &Value) -> Result<
                 Value::Object(spec) => {
                     for (name, sub) in spec {
                         let sub_path = format!("{path}.{name}");
-                        let sub = sub
-                            .as_array()
-                            .ok_or_else(|| err(source, Some(0), &sub_path, "bad header"))?;
+                        let sub = sub.as_array().ok_or_else(|| {
+                            let why = format!("header entry must list keys, got {sub}");
+                            err(source, Some(0), &sub_path, why)
+                        })?;
                         let unpacked = match sub.as_slice() {
                             [Value::Array(item_keys)] => {
                                 let items = value.as_array().ok_or_else(|| {
@@ -251,16 +247,13 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             .get("id")
             .and_then(Value::as_i64)
             .ok_or_else(|| err(source, Some(index), path("id"), "missing or not an integer"))?;
-        let side = match hand.get("type").and_then(Value::as_str) {
-            Some("left") => Side::Left,
-            Some("right") => Side::Right,
+        let side = match hand.get("type") {
+            Some(Value::String(s)) if s == "left" => Side::Left,
+            Some(Value::String(s)) if s == "right" => Side::Right,
             other => {
-                return Err(err(
-                    source,
-                    Some(index),
-                    path("type"),
-                    format!("expected \"left\" or \"right\", got {other:?}"),
-                ));
+                let got = other.map_or("nothing".to_string(), Value::to_string);
+                let why = format!("expected \"left\" or \"right\", got {got}");
+                return Err(err(source, Some(index), path("type"), why));
             }
         };
         let mut joints = [[Vec3::ZERO; 4]; 5];

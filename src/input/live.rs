@@ -70,7 +70,7 @@ impl LiveLeap {
                     source_name: self.url.clone(),
                     frame: Some(index),
                     field: "json".into(),
-                    reason: e.to_string(),
+                    reason: crate::file_error::json_reason(&e),
                 })
                 .and_then(|v| {
                     if v.get("timestamp").is_none()

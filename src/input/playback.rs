@@ -69,10 +69,15 @@ impl std::fmt::Display for Skipped {
 /// The default grace period for tracking dropouts (s).
 pub const DEFAULT_GRACE: f64 = 0.1;
 
+/// The longest recording replayed (s): one hour. Later timestamps are
+/// taken for corrupt data, as a replay of them would not end.
+pub const MAX_DURATION: f64 = 3600.0;
+
 impl Playback {
     /// Converts every hand of every frame, leaving out and listing the
     /// glitches of the module doc; any other bad frame is an error naming
-    /// the frame.
+    /// the frame. Timestamps must not run past [`MAX_DURATION`] from the
+    /// first.
     pub fn new(
         source: &str,
         frames: &[TrackingFrame],
@@ -97,7 +102,16 @@ impl Playback {
                 continue;
             }
             last = frame.timestamp_us;
-            let t = (frame.timestamp_us - start) as f64 * 1e-6;
+            let t =
+                frame.timestamp_us.checked_sub(start).map_or(f64::INFINITY, |d| d as f64 * 1e-6);
+            if t > MAX_DURATION {
+                let why = format!(
+                    "{} µs is more than {MAX_DURATION} s (the longest recording replayed) \
+                     after the first frame's {start} µs",
+                    frame.timestamp_us
+                );
+                return Err(fail(i, "timestamp".into(), why));
+            }
             let mut seen: Vec<(i64, Side)> = Vec::with_capacity(frame.hands.len());
             for (h, hand) in frame.hands.iter().enumerate() {
                 if seen.contains(&(hand.id, hand.side)) {
@@ -108,7 +122,7 @@ impl Playback {
                 seen.push((hand.id, hand.side));
                 let bad = |e: String| fail(i, format!("hands[{h}]"), e);
                 let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
-                match pose.validate(0) {
+                match pose.validate(h as u32) {
                     Err(e @ PoseError::ZeroLength { .. }) => {
                         skipped.push(Skipped { frame: i, hand: Some(h), reason: e.to_string() });
                         continue;

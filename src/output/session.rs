@@ -38,6 +38,9 @@ pub enum SessionError {
         /// What went wrong.
         reason: String,
     },
+    /// The session's config was rejected on replay.
+    #[error("session {0}")]
+    Config(WorldError),
     /// A recorded call failed on replay.
     #[error("session call {call}: {source}")]
     Replay {
@@ -46,6 +49,17 @@ pub enum SessionError {
         /// The world's error.
         source: WorldError,
     },
+}
+
+impl SessionError {
+    /// The error as one of the session file at `path`, for messages: a
+    /// replay's error then names the file too.
+    pub fn in_file(self, path: &Path) -> SessionError {
+        match self {
+            SessionError::File { .. } => self,
+            e => SessionError::File { path: path.display().to_string(), reason: e.to_string() },
+        }
+    }
 }
 
 impl Recorder for Session {
@@ -83,8 +97,7 @@ impl Session {
         &self,
         mut each: impl FnMut(&InteractionWorld),
     ) -> Result<InteractionWorld, SessionError> {
-        let mut world = InteractionWorld::new(self.config)
-            .map_err(|source| SessionError::Replay { call: 0, source })?;
+        let mut world = InteractionWorld::new(self.config).map_err(SessionError::Config)?;
         for (i, call) in self.calls.iter().enumerate() {
             let fail = |source| SessionError::Replay { call: i, source };
             match call {
@@ -115,15 +128,17 @@ impl Session {
         std::fs::write(path, text).map_err(|e| fail(e.to_string()))
     }
 
-    /// Reads a session file written by [`Self::save`].
+    /// Reads a session file written by [`Self::save`], and checks its
+    /// config.
     pub fn load(path: &Path) -> Result<Session, SessionError> {
         let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
         let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
-        let session: Session = serde_json::from_str(&text)
-            .map_err(|e| fail(format!("line {} column {}: {e}", e.line(), e.column())))?;
+        let session: Session =
+            serde_json::from_str(&text).map_err(|e| fail(crate::file_error::json_reason(&e)))?;
         if session.format != FORMAT {
             return Err(fail(format!("format is \"{}\", expected \"{FORMAT}\"", session.format)));
         }
+        session.config.validate().map_err(|e| fail(e.to_string()))?;
         Ok(session)
     }
 

@@ -90,3 +90,33 @@ impl TraceLine {
         out.write_all(b"\n")
     }
 }
+
+/// A trace file: buffered, and every error writing it names the file.
+pub struct TraceFile {
+    path: String,
+    out: std::io::BufWriter<std::fs::File>,
+}
+
+impl TraceFile {
+    /// Creates (or truncates) the file at `path`.
+    pub fn create(path: &std::path::Path) -> std::io::Result<TraceFile> {
+        let path = path.display().to_string();
+        let file = std::fs::File::create(&path).map_err(|e| named(&path, e))?;
+        Ok(TraceFile { path, out: std::io::BufWriter::new(file) })
+    }
+}
+
+/// `e` with the file's path in front of its message.
+fn named(path: &str, e: std::io::Error) -> std::io::Error {
+    std::io::Error::new(e.kind(), format!("{path}: {e}"))
+}
+
+impl Write for TraceFile {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.out.write(buf).map_err(|e| named(&self.path, e))
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.out.flush().map_err(|e| named(&self.path, e))
+    }
+}

@@ -30,8 +30,9 @@ pub struct LiveTracks {
     closed: bool,
     /// Tracker hand ids seen so far.
     pub ids_seen: BTreeSet<i64>,
-    /// Frames whose timestamp went backwards, or whose hand could not be
-    /// posed, and were left out.
+    /// Frames whose timestamp went backwards (or is too far from the
+    /// first to subtract), or whose hand could not be posed, and were left
+    /// out.
     pub dropped: usize,
 }
 
@@ -65,7 +66,12 @@ impl LiveTracks {
                 break;
             };
             let start = *self.start_us.get_or_insert(frame.timestamp_us);
-            let time = (frame.timestamp_us - start) as f64 * 1e-6;
+            // A timestamp too far from the first to subtract is corrupt.
+            let Some(elapsed) = frame.timestamp_us.checked_sub(start) else {
+                self.dropped += 1;
+                continue;
+            };
+            let time = elapsed as f64 * 1e-6;
             if time < self.newest {
                 self.dropped += 1;
                 continue;

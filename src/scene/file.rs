@@ -171,14 +171,25 @@ impl Scene {
             objects,
             towers: entry.towers,
         };
+        let limit = crate::hand::MAX_COORDINATE;
         if let Some(g) = scene.ground {
-            StaticDesc::ground(g.height, g.friction).validate().map_err(|e| fail(e.to_string()))?;
+            if !(g.height.is_finite() && g.height.abs() <= limit) {
+                let why = format!("must be finite and within ±{limit} m, got {}", g.height);
+                return Err(fail(format!("ground.height: {why}")));
+            }
+            if !(g.friction.is_finite() && g.friction >= 0.0) {
+                let why = format!("must be finite and ≥ 0, got {}", g.friction);
+                return Err(fail(format!("ground.friction: {why}")));
+            }
         }
         if let Some(g) = scene.gravity.filter(|g| !g.is_finite()) {
             return Err(fail(format!("gravity: must be finite, got {g:?}")));
         }
-        if let Some(t) = scene.towers.iter().find(|t| !t.base.is_finite()) {
-            return Err(fail(format!("towers: base must be finite, got {:?}", t.base)));
+        for (i, t) in scene.towers.iter().enumerate() {
+            if !(t.base.is_finite() && t.base.abs().max_element() <= limit) {
+                let why = format!("must be finite and within ±{limit} m, got {:?}", t.base);
+                return Err(fail(format!("towers[{i}].base: {why}")));
+            }
         }
         for o in &scene.objects {
             o.validate().map_err(|e| fail(e.to_string()))?;

@@ -131,18 +131,17 @@ impl Material {
         Self::named("wood").unwrap_or_else(|| Self::custom("wood", 0.46, 0.46, 0.5))
     }
 
-    pub(crate) fn validate(&self) -> Result<(), &'static str> {
-        let ok = |v: f32| v.is_finite() && v >= 0.0;
-        if !ok(self.skin.static_mu) {
-            return Err("skin.static_mu");
-        }
-        if !ok(self.skin.dynamic_mu) {
-            return Err("skin.dynamic_mu");
-        }
-        if !ok(self.surface_friction) {
-            return Err("surface_friction");
-        }
-        Ok(())
+    /// The first coefficient that is not finite and ≥ 0: its field and
+    /// value.
+    pub(crate) fn validate(&self) -> Result<(), (&'static str, f32)> {
+        [
+            ("skin.static_mu", self.skin.static_mu),
+            ("skin.dynamic_mu", self.skin.dynamic_mu),
+            ("surface_friction", self.surface_friction),
+        ]
+        .into_iter()
+        .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
+        .map_or(Ok(()), Err)
     }
 }
 

@@ -274,7 +274,7 @@ impl ShapeDesc {
     pub(crate) fn build(&self, object: &str, field: &str) -> Result<SharedShape, ObjectError> {
         Ok(match self {
             ShapeDesc::Box { half_extents: h } => {
-                finite_vec(object, field, *h)?;
+                finite_vec(object, &format!("{field}.half_extents"), *h)?;
                 for (axis, v) in ["x", "y", "z"].iter().zip(h.to_array()) {
                     positive(object, &format!("{field}.half_extents.{axis}"), v)?;
                 }
@@ -330,12 +330,9 @@ impl ObjectDesc {
         positive(name, "mass", self.mass)?;
         finite_vec(name, "position", self.position)?;
         unit_quat(name, "rotation", self.rotation)?;
-        if let Err(field) = self.material.validate() {
-            return Err(ObjectError::new(
-                name,
-                format!("material.{field}"),
-                "must be finite and ≥ 0",
-            ));
+        if let Err((field, v)) = self.material.validate() {
+            let why = format!("must be finite and ≥ 0, got {v}");
+            return Err(ObjectError::new(name, format!("material.{field}"), why));
         }
         if let Some(GammaMode::Fixed(g)) = self.gamma {
             positive(name, "gamma", g)?;

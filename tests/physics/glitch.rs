@@ -50,7 +50,7 @@ fn a_fingertip_jumping_up_to_10_cm_into_a_box_never_flings_it() {
             report.push((mass, jump, top));
         }
     }
-    let bad: Vec<_> = report.iter().filter(|r| !(r.2 <= 2.0)).collect();
+    let bad: Vec<_> = report.iter().filter(|r| r.2.is_nan() || r.2 > 2.0).collect();
     assert!(bad.is_empty(), "flung (mass kg, jump m, top speed m/s): {bad:?}\nall: {report:?}");
 }
 

@@ -195,14 +195,19 @@ pub enum CheckError {
     /// Neither `min` nor `max`.
     #[error("needs a bound: min, max or both")]
     NoBound,
-    /// A bound is NaN or infinite.
-    #[error("bounds must be finite")]
-    BoundNotFinite,
+    /// A bound is NaN or infinite (a number too large for `f32`).
+    #[error("{bound}: must be finite, got {value}")]
+    BoundNotFinite {
+        /// `min` or `max`.
+        bound: &'static str,
+        /// Its value.
+        value: f32,
+    },
     /// An axis that is not a unit vector.
-    #[error("axis must be a unit vector, got {0:?}")]
+    #[error("measure.axis: must be a unit vector, got {0:?}")]
     Axis(Vec3),
     /// A path of fewer than two finite points.
-    #[error("path: needs at least two finite [x, z] points")]
+    #[error("measure.path: needs at least two finite [x, z] points")]
     Path,
 }
 
@@ -246,8 +251,10 @@ impl Check {
         if self.min.is_none() && self.max.is_none() {
             return Err(CheckError::NoBound);
         }
-        if self.min.iter().chain(&self.max).any(|b| !b.is_finite()) {
-            return Err(CheckError::BoundNotFinite);
+        for (bound, value) in [("min", self.min), ("max", self.max)] {
+            if let Some(value) = value.filter(|v| !v.is_finite()) {
+                return Err(CheckError::BoundNotFinite { bound, value });
+            }
         }
         let axis = match &self.measure {
             Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
@@ -267,8 +274,11 @@ impl Check {
     }
 
     /// Measures the check on a run's history. Objects were validated, so
-    /// lookups by name succeed.
+    /// lookups by name succeed. An empty history (no step) fails the check.
     pub fn evaluate(&self, h: &History) -> CheckResult {
+        if h.poses.is_empty() {
+            return self.result(f32::NAN);
+        }
         let index = |name: &str| h.names.iter().position(|n| n == name).unwrap_or(0);
         let pose = |o: usize, t: f32| h.poses[h.step(t)][o];
         let value = match &self.measure {
@@ -347,6 +357,11 @@ impl Check {
             }
             Measure::Contacts { object, at } => h.contacts[h.step(*at)][index(object)] as f32,
         };
+        self.result(value)
+    }
+
+    /// The check's outcome for a measured `value`.
+    fn result(&self, value: f32) -> CheckResult {
         let (min_ok, max_ok) =
             (self.min.is_none_or(|m| value >= m), self.max.is_none_or(|m| value <= m));
         let bound = match (self.min, self.max) {

@@ -49,8 +49,8 @@ use crate::hand::rig::HandRig;
 use crate::input::convert::Conversion;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::pipeline::{InteractionConfig, InteractionWorld};
-use crate::scene::Scene;
 use crate::scene::file::SceneEntry;
+use crate::scene::{GammaMode, Scene};
 use check::{Check, CheckResult, History};
 use glam::Vec3;
 use script::{Key, Script};
@@ -214,7 +214,12 @@ impl Scenario {
         }
         let scene = Scene::from_entry(file, entry.scene, dir)?;
         let config = entry.config.with_scene(&scene);
-        config.validate().map_err(|e| fail(format!("config: {e}")))?;
+        config.validate().map_err(|e| fail(e.to_string()))?;
+        if entry.duration < config.dt {
+            let (d, dt) = (entry.duration, config.dt);
+            return Err(fail(format!("duration: must be at least one step (dt {dt} s), got {d}")));
+        }
+        auto_gamma_needs(&scene, &config).map_err(fail)?;
         let hands = entry
             .hands
             .into_iter()
@@ -250,7 +255,8 @@ impl Scenario {
         for hand in &self.hands {
             driver.add_hand(hand.source());
         }
-        let steps = (self.duration / self.config.dt).round() as usize;
+        // At least one step, so the checks have a state to measure.
+        let steps = ((self.duration / self.config.dt).round() as usize).max(1);
         driver.run(steps, &mut drive::observers(vec![&mut history], observers))?;
         let checks: Vec<CheckResult> = self.checks.iter().map(|c| c.evaluate(&history)).collect();
         Ok(ScenarioReport {
@@ -278,6 +284,22 @@ pub enum HandError {
     /// The recording could not be read.
     #[error("recording: {0}")]
     Recording(#[from] crate::input::InputError),
+}
+
+/// The automatic γ (`gamma: "Auto"`, §3.5.6) needs gravity and skin
+/// friction: an object without either is an error before the run.
+fn auto_gamma_needs(scene: &Scene, config: &InteractionConfig) -> Result<(), String> {
+    let blocks = scene.towers.iter().flat_map(|t| t.blocks());
+    for o in scene.objects.iter().cloned().chain(blocks) {
+        let (g, mu) = (config.gravity.length(), o.material.skin.static_mu);
+        if o.gamma.unwrap_or(config.gamma) == GammaMode::Auto && !(g > 0.0 && mu > 0.0) {
+            let why = format!(
+                "\"Auto\" needs gravity and material.skin.static_mu > 0, got {g} m/s² and {mu}"
+            );
+            return Err(format!("object '{}': gamma: {why}", o.name));
+        }
+    }
+    Ok(())
 }
 
 fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
@@ -324,12 +346,19 @@ fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
                 None => 0,
                 Some(side) => {
                     playback.tracks.iter().position(|t| t.side == side).ok_or_else(|| {
-                        field("side", &format!("the recording has no {side:?} hand"))
+                        let side = format!("{side:?}").to_lowercase();
+                        field("side", &format!("the recording has no {side} hand"))
                     })?
                 }
             };
             if playback.tracks.is_empty() {
-                return Err(field("recording", "it tracks no hands"));
+                let mut why = String::from("it tracks no hands");
+                let left_out: Vec<String> =
+                    playback.skipped.iter().map(|s| s.to_string()).collect();
+                if !left_out.is_empty() {
+                    why += &format!(" (left out: {})", left_out.join("; "));
+                }
+                return Err(field("recording", &why));
             }
             Ok(ScenarioHand::Recording { playback: Box::new(playback), track })
         }

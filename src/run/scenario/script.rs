@@ -2,7 +2,7 @@
 //! between, on the parametric [`HandRig`].
 
 use crate::hand::rig::{Articulation, HandRig};
-use crate::hand::{HandPose, HandSample, Side};
+use crate::hand::{HandPose, HandSample, MAX_COORDINATE, Side};
 use crate::run::RunError;
 use crate::run::drive::HandSource;
 use glam::{EulerRot, Quat, Vec3};
@@ -121,8 +121,9 @@ pub struct Script {
 
 impl Script {
     /// Checks the keys: at least one, times finite, non-negative and
-    /// increasing, positions and angles finite, flexion and opposition in
-    /// [0, 1]. The error names the key and the field.
+    /// increasing, positions finite and within [`MAX_COORDINATE`], angles
+    /// finite, flexion and opposition in [0, 1]. The error names the key
+    /// and the field.
     pub fn new(side: Side, keys: Vec<Key>) -> Result<Script, KeyError> {
         Self::with_rig(HandRig::adult(side), keys)
     }
@@ -143,8 +144,10 @@ impl Script {
                 return at("t", format!("times must increase, got {} after {previous}", k.t));
             }
             previous = k.t;
-            if !k.palm.is_finite() {
-                return at("palm", format!("must be finite, got {:?}", k.palm));
+            if !(k.palm.is_finite() && k.palm.abs().max_element() <= MAX_COORDINATE) {
+                let why =
+                    format!("must be finite and within ±{MAX_COORDINATE} m, got {:?}", k.palm);
+                return at("palm", why);
             }
             if !k.rotation_deg.is_finite() {
                 return at("rotation_deg", format!("must be finite, got {:?}", k.rotation_deg));

@@ -27,8 +27,12 @@ pub type MeshError = crate::file_error::FileError;
 /// What is wrong with a mesh, or with making a body of it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MeshProblem {
-    /// The file's extension is none of the formats read.
-    #[error("unknown mesh format \".{0}\" (obj, stl, gltf or glb)")]
+    /// The file's extension (lower case, or empty when it has none) is
+    /// none of the formats read.
+    #[error(
+        "unknown mesh format {} (obj, stl, gltf or glb)",
+        if .0.is_empty() { "(no file extension)".to_string() } else { format!("\".{}\"", .0) }
+    )]
     UnknownFormat(String),
     /// The file could not be read or parsed; the reader's own message.
     #[error("{0}")]
@@ -271,7 +275,9 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     let mut buffers = Vec::new();
     for buffer in gltf.buffers() {
         let data = match buffer.source() {
-            gltf::buffer::Source::Bin => gltf.blob.clone().ok_or("the GLB has no binary chunk")?,
+            gltf::buffer::Source::Bin => gltf.blob.clone().ok_or_else(|| {
+                format!("buffer {} has no uri, and the file no GLB binary chunk", buffer.index())
+            })?,
             gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
                 Some(rest) => {
                     let (_, b64) = rest
@@ -302,16 +308,29 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
                     continue;
                 }
                 let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
-                let Some(positions) = reader.read_positions() else { continue };
+                let Some(positions) = reader.read_positions() else {
+                    let (mesh, primitive) = (m.index(), primitive.index());
+                    let why = "POSITION is missing or runs past the end of its buffer";
+                    return Err(format!("mesh {mesh} primitive {primitive}: {why}").into());
+                };
                 let base = mesh.vertices.len() as u32;
                 mesh.vertices.extend(positions.map(|p| transform.transform_point3(Vec3::from(p))));
                 let count = mesh.vertices.len() as u32 - base;
-                let indices: Vec<u32> = match reader.read_indices() {
-                    Some(i) => i.into_u32().collect(),
-                    None => (0..count).collect(),
+                let indices: Vec<u32> = match (reader.read_indices(), primitive.indices()) {
+                    (Some(i), _) => i.into_u32().collect(),
+                    (None, None) => (0..count).collect(),
+                    (None, Some(_)) => {
+                        let (mesh, primitive) = (m.index(), primitive.index());
+                        let why = "its indices run past the end of their buffer";
+                        return Err(format!("mesh {mesh} primitive {primitive}: {why}").into());
+                    }
                 };
+                // Saturating: an index too large for any vertex stays out
+                // of range, for `check` to report.
                 mesh.triangles.extend(
-                    indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]),
+                    indices
+                        .chunks_exact(3)
+                        .map(|t| [t[0], t[1], t[2]].map(|k| base.saturating_add(k))),
                 );
             }
         }

@@ -1,0 +1,117 @@
+//! The command line: argument validation (clap, with the binary's own
+//! parsers and GraspObjectError), and the RunError of each command, each
+//! naming the argument, file or value that is wrong.
+
+use crate::{Scratch, cli_error, frame, leap_hand, names, recording, repo, usage_error};
+use coulomb_hands::run::replay::{GraspObject, GraspObjectError};
+
+fn pinch() -> String {
+    repo("data/leap/pinch.json.lz").display().to_string()
+}
+
+#[test]
+fn grasp_objects_name_the_part_that_is_wrong() {
+    let parse = |s: &str| s.parse::<GraspObject>().unwrap_err();
+    let e = parse("box:0.04");
+    assert_eq!(e, GraspObjectError::Form("box:0.04".into()));
+    names(e, &["expected SHAPE:SIZE_M:MASS_KG, e.g. box:0.045:0.05, got \"box:0.04\""]);
+    names(parse("cube:0.04:0.05"), &["unknown shape \"cube\" (box or sphere)"]);
+    names(parse("box:-0.04:0.05"), &["SIZE_M must be a positive number, got \"-0.04\""]);
+    names(parse("sphere:0.04:heavy"), &["MASS_KG must be a positive number, got \"heavy\""]);
+    names(parse("sphere:0.04:inf"), &["MASS_KG must be a positive number, got \"inf\""]);
+    let e = usage_error(&["replay", "--object-at-grasp", "ball:0.04:0.05", &pinch()]);
+    names(e, &["'ball:0.04:0.05'", "--object-at-grasp", "unknown shape \"ball\""]);
+}
+
+#[test]
+fn the_binarys_own_parsers_name_the_value() {
+    let e = usage_error(&["replay", "--device", "1,x,3", &pinch()]);
+    names(e, &["'1,x,3'", "--device", "expected three finite numbers \"x,y,z\", got \"1,x,3\""]);
+    let e = usage_error(&["replay", "--device", "0,0", &pinch()]);
+    names(e, &["--device", "expected three finite numbers \"x,y,z\", got \"0,0\""]);
+    let e = usage_error(&["live", "--device", "0,inf,0"]);
+    names(e, &["--device", "got \"0,inf,0\""]);
+    let e = usage_error(&["replay", "--gamma=-1", &pinch()]);
+    names(e, &["--gamma", "expected \"auto\" or a positive number of N/m, got \"-1\""]);
+    let e = usage_error(&["replay", "--gamma", "stiff", &pinch()]);
+    names(e, &["--gamma", "got \"stiff\""]);
+}
+
+#[test]
+fn clap_names_missing_and_conflicting_arguments() {
+    names(usage_error(&["scenario"]), &["required arguments", "<SCENARIO>"]);
+    names(usage_error(&["scenario", "--all", "push"]), &["'--all'", "'[SCENARIO]'"]);
+    names(usage_error(&["scenario", "--all", "--trace", "t.jsonl"]), &["'--trace"]);
+    names(usage_error(&["replay"]), &["<FILE>"]);
+    names(usage_error(&["bench", "--steps", "many"]), &["'many'", "--steps"]);
+    names(usage_error(&["fly"]), &["unrecognized subcommand 'fly'"]);
+}
+
+#[test]
+fn bad_recordings_name_the_file_frame_and_field() {
+    let dir = Scratch::new("cli-recording");
+    let e = cli_error(&["replay", &dir.text("gone.json.lz")]);
+    assert_eq!(
+        e,
+        format!("{}: file: No such file or directory (os error 2)", dir.text("gone.json.lz"))
+    );
+    let mut hand = leap_hand(7);
+    hand.0["type"] = "both".into();
+    let file = dir.file("r.json", recording(&[frame(0, &[]), frame(1000, &[hand])]));
+    let e = cli_error(&["replay", &file.display().to_string()]);
+    names(e, &[&dir.text("r.json"), ": frame 1: hands[0].type: ", "got \"both\""]);
+    let long = dir.file("long.json", recording(&[frame(0, &[]), frame(i64::MAX, &[])]));
+    let e = cli_error(&["replay", &long.display().to_string()]);
+    names(e, &["long.json: frame 1: timestamp: ", "more than 3600 s"]);
+}
+
+#[test]
+fn objects_at_a_grasp_the_recording_lacks_or_cannot_hold_are_errors() {
+    let dir = Scratch::new("cli-grasp");
+    let empty = dir.file("empty.json", recording(&[frame(0, &[]), frame(1000, &[])]));
+    let e =
+        cli_error(&["replay", "--object-at-grasp", "box:0.04:0.05", &empty.display().to_string()]);
+    assert_eq!(e, "the recording has 0 grasps, so there is no grasp 1");
+    let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
+    let e =
+        cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &one.display().to_string()]);
+    names(e, &["object 'grasped': shape.half_extents: must be finite and within ±10000 m"]);
+}
+
+#[test]
+fn outputs_that_cannot_be_written_are_named() {
+    let dir = Scratch::new("cli-outputs");
+    let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
+    let one = one.display().to_string();
+    let trace = dir.text("no-dir/trace.jsonl");
+    let e = cli_error(&["replay", "--trace", &trace, &one]);
+    assert_eq!(e, format!("output: {trace}: No such file or directory (os error 2)"));
+    let e = cli_error(&["scenario", "push", "--trace", &trace]);
+    assert_eq!(e, format!("output: {trace}: No such file or directory (os error 2)"));
+    let record = dir.text("no-dir/session.json");
+    let e = cli_error(&["replay", "--record", &record, &one]);
+    assert_eq!(e, format!("{record}: No such file or directory (os error 2)"));
+    let out = dir.file("meshes", "a file, not a directory");
+    let e = cli_error(&["mesh", "--out", &out.display().to_string()]);
+    names(e, &[&dir.text("meshes"), "exists"]);
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_full_disk_while_tracing_names_the_trace_file() {
+    let dir = Scratch::new("cli-full");
+    let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
+    let e = cli_error(&["replay", "--trace", "/dev/full", &one.display().to_string()]);
+    assert_eq!(e, "output: /dev/full: No space left on device (os error 28)");
+}
+
+#[test]
+fn a_live_service_that_is_not_there_is_named() {
+    // A port that was free a moment ago: nothing listens on it.
+    let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+    let url = format!("ws://127.0.0.1:{port}/v6.json");
+    let e = cli_error(&["live", "--url", &url, "--seconds", "0.01"]);
+    names(e, &[&format!("{url}: connection: ")]);
+    let e = cli_error(&["live", "--url", "http://127.0.0.1/v6.json", "--seconds", "0.01"]);
+    names(e, &["http://127.0.0.1/v6.json: connection: ", "scheme"]);
+}
