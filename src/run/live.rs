@@ -31,8 +31,8 @@ pub struct LiveTracks {
     /// Tracker hand ids seen so far.
     pub ids_seen: BTreeSet<i64>,
     /// Frames whose timestamp went backwards (or is too far from the
-    /// first to subtract), or whose hand could not be posed, and were left
-    /// out.
+    /// first to subtract), and hands that could not be posed or came twice
+    /// for one side at one time, left out.
     pub dropped: usize,
 }
 
@@ -83,10 +83,12 @@ impl LiveTracks {
                     Ok(pose) if pose.validate(0).is_ok() => {
                         let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
                         let side = &mut self.samples[hand.side as usize];
-                        // A second hand of the same side in one frame is a
-                        // tracker's mistake: the first one counts.
+                        // A second hand of the same side in one frame (or at
+                        // one time) is a tracker's mistake: the first counts.
                         if side.last().is_none_or(|(last, _)| *last < time) {
                             side.push((time, sample));
+                        } else {
+                            self.dropped += 1;
                         }
                     }
                     _ => self.dropped += 1,
@@ -140,7 +142,8 @@ pub struct LiveSummary {
     pub frames: usize,
     /// Messages skipped as malformed.
     pub skipped: usize,
-    /// Frames or hands left out (time going backwards, unusable poses).
+    /// Frames or hands left out (time going backwards, unusable poses, a
+    /// second hand of a side at one time).
     pub dropped: usize,
     /// Distinct tracker hand ids seen.
     pub hands_seen: usize,

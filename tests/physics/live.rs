@@ -105,3 +105,62 @@ fn the_live_driver_steps_the_physics_through_the_stream_and_touches_what_is_ther
     assert!(summary.contacts_begun > 0, "the hand never touched the cube: {summary:?}");
     assert!(summary.objects[0].displacement > 0.001, "the cube did not move: {summary:?}");
 }
+
+#[test]
+fn a_live_stream_with_a_burst_stale_frames_and_duplicate_hands_stays_calm() {
+    // The first 200 frames of the real pinch, sent as a glitching service
+    // would: frames 60–90 each followed by nine copies 100 µs apart (a
+    // 10 kHz burst), every 20th frame followed by a stale one 30 ms old, and
+    // frames 120–130 carrying their hand twice.
+    let frames = pinch_frames()[..200].to_vec();
+    let (mut messages, mut stale, mut doubled) = (Vec::new(), 0, 0);
+    for (i, frame) in frames.iter().enumerate() {
+        let mut frame = frame.clone();
+        if (120..130).contains(&i) {
+            let hand = frame["hands"][0].clone();
+            frame["hands"].as_array_mut().unwrap().push(hand);
+            doubled += 1;
+        }
+        messages.push(frame.to_string());
+        let timestamp = frame["timestamp"].as_i64().unwrap();
+        if (60..90).contains(&i) {
+            for k in 1..10 {
+                let mut copy = frame.clone();
+                copy["timestamp"] = (timestamp + 100 * k).into();
+                messages.push(copy.to_string());
+            }
+        }
+        if i % 20 == 10 {
+            let mut old = frame.clone();
+            old["timestamp"] = (timestamp - 30_000).into();
+            messages.push(old.to_string());
+            stale += 1;
+        }
+    }
+    let recorded = leap::load(&pinch_path()).unwrap();
+    let conversion = Conversion::leap_desktop(Vec3::ZERO);
+    let playback = Playback::new("pinch", &recorded.frames[..200], &conversion, DEFAULT_GRACE);
+    let tip = playback.unwrap().sample(0, 0.9).unwrap().pose.fingers[1][2].b;
+    let cube = ObjectDesc::cuboid("cube", Vec3::splat(0.03), 0.05, tip);
+    let (url, server) = serve(messages);
+    let (summary, top) = within_a_minute(move || {
+        let weightless = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
+        let (mut world, _) = world_with_objects(weightless, &[cube]).unwrap();
+        let mut top = 0.0f32;
+        let mut calm = |step: &coulomb_hands::run::drive::StepView| {
+            if let Some(bad) = step.world.first_non_finite() {
+                panic!("{bad} is not finite at t = {}", step.t);
+            }
+            let v = step.world.object_state(coulomb_hands::ObjectId(0)).unwrap().linvel;
+            top = top.max(v.length());
+            Ok(())
+        };
+        let summary =
+            run_live(&url, &mut world, conversion, DEFAULT_GRACE, 60.0, &mut [&mut calm]).unwrap();
+        (summary, top)
+    });
+    server.join().unwrap();
+    assert_eq!((summary.skipped, summary.dropped), (0, stale + doubled), "{summary:?}");
+    assert!(summary.contacts_begun > 0, "the hand never touched the cube: {summary:?}");
+    assert!(top <= 2.0, "the cube reached {top:.2} m/s");
+}
