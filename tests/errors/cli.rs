@@ -2,7 +2,7 @@
 //! parsers and GraspObjectError), and the RunError of each command, each
 //! naming the argument, file or value that is wrong.
 
-use crate::{Scratch, cli_error, frame, leap_hand, names, recording, repo, usage_error};
+use crate::{Scratch, cli_error, frame, leap_hand, names, recording, repo, run, usage_error};
 use coulomb_hands::run::replay::{GraspObject, GraspObjectError};
 
 fn pinch() -> String {
@@ -114,4 +114,31 @@ fn a_live_service_that_is_not_there_is_named() {
     names(e, &[&format!("{url}: connection: ")]);
     let e = cli_error(&["live", "--url", "http://127.0.0.1/v6.json", "--seconds", "0.01"]);
     names(e, &["http://127.0.0.1/v6.json: connection: ", "scheme"]);
+}
+
+#[test]
+fn replay_lists_the_tracking_glitches_it_left_out() {
+    // A stale frame and a hand given twice: the replay runs, and says what
+    // it left out, in text and in JSON.
+    let dir = Scratch::new("cli-glitches");
+    let hand = leap_hand(3);
+    let frames = [
+        frame(0, std::slice::from_ref(&hand)),
+        frame(10_000, &[hand.clone(), hand.clone()]),
+        frame(4_000, std::slice::from_ref(&hand)),
+        frame(20_000, std::slice::from_ref(&hand)),
+    ];
+    let file = dir.file("glitchy.json", recording(&frames)).display().to_string();
+    let (code, stdout, stderr) = run(&["replay", &file]);
+    assert_eq!(code, Some(0), "{stderr}");
+    names(
+        &stdout,
+        &[
+            "left out 2 tracking glitches:",
+            "  frame 1 hands[1]: another Right hand with id 3",
+            "  frame 2: timestamp goes backwards (4000 after 10000)",
+        ],
+    );
+    let (_, json, _) = run(&["replay", &file, "--json"]);
+    names(&json, &["\"skipped\": [", "frame 2: timestamp goes backwards"]);
 }
