@@ -209,10 +209,11 @@ pub(crate) struct PatchScratch {
 
 /// Spreads a contact's force over its skin patch: each sample keeps its
 /// share of the force plus its deviation spring (tangential γ/N, normal
-/// [`Rocking`]), limited by its own share of the friction cone (a sample beyond it slips by the slip rule, which
-/// is how a patch slips in torsion). Writes the samples' world points to
-/// `points` and appends `(force on the object, point)` per sample to
-/// `scratch.applied`.
+/// [`Rocking`]), limited by its own share of the friction cone (a sample
+/// beyond it slips by the slip rule, which is how a patch slips in
+/// torsion). No sample pulls ([`push_only`]). Writes the samples' world
+/// points to `points` and appends `(force on the object, point)` per
+/// sample to `scratch.applied`.
 pub(crate) fn spread(
     step: &PatchStep,
     anchor: &mut Anchor,

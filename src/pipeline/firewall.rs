@@ -42,8 +42,9 @@ pub(super) struct Admitted {
     pub diameter: f32,
 }
 
-/// An object's description, and the γ it gets under `mode` (Eq. 3.11 for
-/// [`GammaMode::Auto`], at gravity of magnitude `gravity`, m/s²).
+/// An object's description, and the γ it gets under `mode`
+/// ([`friction::auto_gamma`] for [`GammaMode::Auto`], at gravity of
+/// magnitude `gravity`, m/s²).
 pub(super) fn object(
     desc: &ObjectDesc,
     mode: GammaMode,
