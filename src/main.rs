@@ -61,6 +61,12 @@ enum Command {
         /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
         #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE)]
         grace: f64,
+        /// Soak: replay over and over in one world for this wall-clock time (90s, 10m,
+        /// 1h30m), putting the objects back and re-locking their fixtures before each
+        /// loop; report memory, steps per second and the peak object speed.
+        #[arg(long = "loop", value_name = "DURATION", conflicts_with = "record",
+              value_parser = coulomb_hands::run::soak::parse_duration)]
+        soak: Option<std::time::Duration>,
     },
     /// Run the physics on a live Leap Motion service's WebSocket stream.
     Live {
@@ -210,17 +216,22 @@ struct ReplayArgs<'a> {
     object: Option<coulomb_hands::run::replay::GraspObject>,
     record: Option<&'a std::path::Path>,
     scene: Option<&'a std::path::Path>,
+    soak: Option<std::time::Duration>,
 }
 
-fn replay(args: ReplayArgs) -> Result<(), RunError> {
+/// `replay`: one replay, a session's replay, or a soak.
+fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
     use coulomb_hands::output::Session;
     use coulomb_hands::run::observe::TraceWriter;
     use coulomb_hands::run::replay::{place_at_grasp, replay, replay_world};
-    let ReplayArgs { file, trace, json, device, grace, gamma, object, record, scene } = args;
+    let ReplayArgs { file, trace, json, device, grace, gamma, object, record, scene, soak } = args;
     let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
     if std::fs::read_to_string(file).is_ok_and(|t| Session::sniff(&t)) {
-        return replay_session(file, json);
+        if soak.is_some() {
+            return Err("--loop replays Leap recordings; a session file replays once".into());
+        }
+        return Ok(replay_session(file, json)?);
     }
     let recording = leap::load(file)?;
     let conversion = Conversion::leap_desktop(device);
@@ -238,6 +249,20 @@ fn replay(args: ReplayArgs) -> Result<(), RunError> {
         site = Some(s);
     }
     let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
+    if let Some(duration) = soak {
+        let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
+        observers.extend(writer.as_mut().map(|w| w as _));
+        let source = &recording.source_name;
+        let report = soak_loop(source, &playback, &mut world, &fixtures, duration, &mut observers)?;
+        if let Some(w) = writer {
+            w.finish()?;
+        }
+        print_soak(&report, json)?;
+        if report.memory.grew {
+            return Err("memory grew by more than 5 % after the first loop".into());
+        }
+        return Ok(());
+    }
     let summary = match writer.as_mut() {
         Some(w) => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [w])?,
         None => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [])?,
@@ -277,6 +302,77 @@ fn replay(args: ReplayArgs) -> Result<(), RunError> {
         );
     }
     println!("all values finite: {}", summary.all_finite);
+    Ok(())
+}
+
+/// `replay --loop`: the soak, with a progress bar on a terminal.
+fn soak_loop(
+    source: &str,
+    playback: &coulomb_hands::input::playback::Playback,
+    world: &mut coulomb_hands::InteractionWorld,
+    fixtures: &[coulomb_hands::run::replay::Fixture],
+    duration: std::time::Duration,
+    observers: &mut [&mut dyn coulomb_hands::run::drive::Observer],
+) -> Result<coulomb_hands::run::soak::SoakReport, RunError> {
+    use coulomb_hands::run::soak::{SoakLength, SoakProgress, soak};
+    use std::io::IsTerminal;
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new(duration.as_secs().max(1));
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:30} {elapsed}/{len}s {msg}")
+                .expect("valid template"),
+        );
+        bar
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+    let mut progress = |p: &SoakProgress| {
+        bar.set_position(p.elapsed.as_secs());
+        let rate = p.steps as f64 / p.elapsed.as_secs_f64().max(1e-9);
+        bar.set_message(format!("{} loops, {} steps, {rate:.0} steps/s", p.loops, p.steps));
+    };
+    let length = SoakLength::Wall(duration);
+    let report = soak(source, playback, world, fixtures, length, observers, &mut progress);
+    bar.finish_and_clear();
+    report
+}
+
+/// Prints a soak's report.
+fn print_soak(r: &coulomb_hands::run::soak::SoakReport, json: bool) -> Result<(), RunError> {
+    if json {
+        println!("{}", serde_json::to_string_pretty(r).map_err(std::io::Error::other)?);
+        return Ok(());
+    }
+    let mib = |k: Option<u64>| {
+        k.map_or("unavailable".into(), |k| format!("{:.1} MiB", k as f64 / 1024.0))
+    };
+    println!("soaked {} for {:.1} s of wall-clock time", r.source, r.wall);
+    println!(
+        "loops: {}, steps: {} ({} a loop), simulated: {:.1} s",
+        r.loops, r.steps, r.steps_per_loop, r.simulated
+    );
+    println!("steps per second: {:.0}", r.steps_per_second);
+    println!(
+        "peak object speed: {:.3} m/s ({} in loop {}); loop peaks {:.3}-{:.3} m/s",
+        r.peak_speed,
+        r.peak_object.as_deref().unwrap_or("no object"),
+        r.peak_loop,
+        r.loop_peak_range[0],
+        r.loop_peak_range[1]
+    );
+    println!("contacts begun: {}, all values finite: {}", r.contacts_begun, r.all_finite);
+    let m = &r.memory;
+    println!(
+        "memory (RSS): start {}, after the first loop {}, end {}",
+        mib(m.start_kib),
+        mib(m.first_loop_kib),
+        mib(m.end_kib)
+    );
+    match m.growth {
+        Some(g) if m.grew => println!("memory GREW {:+.1} % since the first loop", g * 100.0),
+        Some(g) => println!("memory flat: {:+.1} % since the first loop", g * 100.0),
+        None => println!("memory growth: unavailable"),
+    }
     Ok(())
 }
 
@@ -483,6 +579,7 @@ fn main() -> ExitCode {
             object_at_grasp,
             gamma,
             grace,
+            soak,
         } => replay(ReplayArgs {
             file: &file,
             trace: trace.as_deref(),
@@ -493,6 +590,7 @@ fn main() -> ExitCode {
             object: object_at_grasp,
             record: record.as_deref(),
             scene: scene.as_deref(),
+            soak,
         })
         .map_err(|e| e.to_string()),
     };

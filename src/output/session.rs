@@ -112,6 +112,9 @@ impl Session {
                     world.set_object_locked(ObjectId(*o), *locked).map_err(fail)?
                 }
                 Call::ReseatContacts(o) => world.reseat_contacts(ObjectId(*o)).map_err(fail)?,
+                Call::PlaceObject(o, position, rotation) => {
+                    world.place_object(ObjectId(*o), *position, *rotation).map_err(fail)?
+                }
                 Call::Step => {
                     world.step();
                     each(&world);

@@ -5,6 +5,7 @@
 
 use crate::hand::{HandPose, Side};
 use crate::scene::{ObjectDesc, StaticDesc};
+use glam::{Quat, Vec3};
 
 /// One call that changed a world, as data. Hands and objects are named by
 /// their index (`HandId.0`, `ObjectId.0`).
@@ -25,6 +26,8 @@ pub enum Call {
     SetObjectLocked(u32, bool),
     /// [`crate::InteractionWorld::reseat_contacts`].
     ReseatContacts(u32),
+    /// [`crate::InteractionWorld::place_object`].
+    PlaceObject(u32, Vec3, Quat),
     /// [`crate::InteractionWorld::step_physics`], which ends every step.
     Step,
 }

@@ -336,6 +336,35 @@ impl InteractionWorld {
         Ok(())
     }
 
+    /// Puts an object at `position` (m) and `rotation`, at rest and awake,
+    /// as if picked up and set down there: its velocities are zeroed and
+    /// its contacts re-seated ([`Self::reseat_contacts`]). A soak puts its
+    /// objects back this way before each loop. A non-finite position, one
+    /// beyond [`crate::hand::MAX_COORDINATE`] or a rotation that is not a
+    /// unit quaternion is rejected, and nothing changes.
+    pub fn place_object(
+        &mut self,
+        id: ObjectId,
+        position: Vec3,
+        rotation: Quat,
+    ) -> Result<(), WorldError> {
+        let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        crate::scene::object::finite_vec(&slot.name, "position", position)?;
+        crate::scene::object::unit_quat(&slot.name, "rotation", rotation)?;
+        slot.reseat = true;
+        if let Some(body) = self.physics.bodies.get_mut(slot.body) {
+            body.set_position(Pose::from_parts(position, rotation), true);
+            body.set_linvel(Vec3::ZERO, true);
+            body.set_angvel(Vec3::ZERO, true);
+        }
+        // rapier moves colliders with their bodies only in its step; the
+        // contacts found before it must see the object where it now is.
+        let physics = &mut self.physics;
+        physics.bodies.propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+        self.record(|| Call::PlaceObject(id.0, position, rotation));
+        Ok(())
+    }
+
     /// The current state of an object.
     pub fn object_state(&self, id: ObjectId) -> Result<ObjectState, WorldError> {
         let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;

@@ -5,6 +5,8 @@
 //! * [`observe`]: the trace writer and the per-object summary;
 //! * [`replay`]: recordings replayed, with objects at a recorded grasp
 //!   ([`grasp`] finds where a recorded hand closes);
+//! * [`soak`]: a recording replayed in a loop in one world, watching
+//!   memory and speed;
 //! * [`live`]: a live Leap Motion stream;
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
@@ -18,6 +20,7 @@ pub mod live;
 pub mod observe;
 pub mod replay;
 pub mod scenario;
+pub mod soak;
 
 use crate::file_error::FileError;
 use crate::input::InputError;

@@ -249,7 +249,7 @@ fn positive(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
     }
 }
 
-fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
+pub(crate) fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
     if v.is_finite() && v.abs().max_element() <= crate::hand::MAX_COORDINATE {
         Ok(())
     } else {
@@ -261,7 +261,7 @@ fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
     }
 }
 
-fn unit_quat(object: &str, field: &str, q: Quat) -> Result<(), ObjectError> {
+pub(crate) fn unit_quat(object: &str, field: &str, q: Quat) -> Result<(), ObjectError> {
     if q.is_finite() && (q.length() - 1.0).abs() <= 1.0e-3 {
         Ok(())
     } else {

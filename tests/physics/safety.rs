@@ -354,3 +354,39 @@ fn a_box_dropped_onto_a_flat_palm_is_caught_and_comes_to_rest() {
         rest_depth * 1e3
     );
 }
+
+#[test]
+fn placing_an_object_sets_it_down_at_rest_and_a_bad_place_changes_nothing() {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let start = Vec3::new(0.0, 0.5, 0.0);
+    let id =
+        world.add_object(&ObjectDesc::cuboid("crate", Vec3::splat(0.05), 0.05, start)).unwrap();
+    Driver::new(&mut world).run(200, &mut []).unwrap();
+    let falling = world.object_state(id).unwrap();
+    assert!(falling.linvel.y < -1.0, "falling at {:?}", falling.linvel);
+    let bad = [
+        (Vec3::new(f32::NAN, 0.1, 0.0), Quat::IDENTITY, "position"),
+        (Vec3::splat(2.0e4), Quat::IDENTITY, "position"),
+        (Vec3::ZERO, Quat::from_xyzw(0.0, 0.0, 0.0, 2.0), "rotation"),
+    ];
+    for (position, rotation, field) in bad {
+        let err = world.place_object(id, position, rotation).unwrap_err().to_string();
+        assert!(err.contains("crate") && err.contains(field), "{err} should name '{field}'");
+        assert_eq!(world.object_state(id).unwrap(), falling);
+    }
+    assert!(world.place_object(ObjectId(7), start, Quat::IDENTITY).is_err());
+    // Back at the start, turned, at rest: it falls from there again.
+    let turn = Quat::from_rotation_y(1.0);
+    world.place_object(id, start, turn).unwrap();
+    let placed = world.object_state(id).unwrap();
+    assert_eq!((placed.position, placed.linvel, placed.angvel), (start, Vec3::ZERO, Vec3::ZERO));
+    assert!(placed.rotation.angle_between(turn) < 1e-6 && !placed.sleeping);
+    // Its collider is there at once, for the contacts of the next step.
+    let body = &world.physics().bodies[world.object_body(id).unwrap()];
+    let collider = &world.physics().colliders[body.colliders()[0]];
+    assert_eq!(collider.position().translation, start);
+    Driver::new(&mut world).run(200, &mut []).unwrap();
+    let again = world.object_state(id).unwrap();
+    assert!((again.position.y - falling.position.y).abs() < 1e-3, "{again:?} vs {falling:?}");
+}
