@@ -28,8 +28,8 @@ enum Command {
         #[arg(long)]
         thesis_kinetic: bool,
         /// Seconds between printed rows.
-        #[arg(long, default_value_t = 0.25)]
-        every: f32,
+        #[arg(long, default_value_t = 0.25, value_parser = positive)]
+        every: f64,
     },
     /// Replay a Leap Motion recording (.json.lz or .json), or a recorded session, headlessly.
     Replay {
@@ -59,7 +59,8 @@ enum Command {
         #[arg(long, default_value = "400", value_parser = parse_gamma)]
         gamma: coulomb_hands::GammaMode,
         /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
-        #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE)]
+        #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE,
+              value_parser = at_least_zero)]
         grace: f64,
         /// Soak: replay over and over in one world for this wall-clock time (90s, 10m,
         /// 1h30m), putting the objects back and re-locking their fixtures before each
@@ -74,7 +75,7 @@ enum Command {
         #[arg(long, default_value = coulomb_hands::input::live::DEFAULT_URL)]
         url: String,
         /// Stop after this many seconds of tracking time.
-        #[arg(long, default_value_t = 10.0)]
+        #[arg(long, default_value_t = 10.0, value_parser = positive)]
         seconds: f64,
         /// Where the desktop device sits in the world, "x,y,z" in metres.
         #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
@@ -107,8 +108,8 @@ enum Command {
         #[arg(long, default_value_t = 2000)]
         steps: usize,
         /// Held boxes (2 bones in contact each), 1..=16.
-        #[arg(long, default_value_t = 16)]
-        boxes: usize,
+        #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u16).range(1..=16))]
+        boxes: u16,
         /// Leave the tower out.
         #[arg(long)]
         no_tower: bool,
@@ -184,6 +185,26 @@ fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
     if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
 }
 
+/// A finite number > 0.
+fn positive(s: &str) -> Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|e| format!("expected a number, got {s:?} ({e})"))?;
+    if v.is_finite() && v > 0.0 && (v as f32) > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("must be a finite number > 0, got {s}"))
+    }
+}
+
+/// A finite number ≥ 0.
+fn at_least_zero(s: &str) -> Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|e| format!("expected a number, got {s:?} ({e})"))?;
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("must be a finite number ≥ 0, got {s}"))
+    }
+}
+
 fn parse_gamma(s: &str) -> Result<coulomb_hands::GammaMode, String> {
     if s == "auto" {
         return Ok(coulomb_hands::GammaMode::Auto);
@@ -236,7 +257,10 @@ fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     let recording = leap::load(file)?;
     let conversion = Conversion::leap_desktop(device);
     let playback = Playback::new(&recording.source_name, &recording.frames, &conversion, grace)?;
-    let config = InteractionConfig { gamma, ..InteractionConfig::default() };
+    let mut config = InteractionConfig { gamma, ..InteractionConfig::default() };
+    if let Some(scene) = &scene {
+        config = config.with_scene(scene);
+    }
     let mut world = replay_world(config, record.is_some())?;
     if let Some(scene) = &scene {
         world.add_scene(scene)?;
@@ -556,8 +580,8 @@ fn main() -> ExitCode {
         thesis_kinetic: false,
         every: 0.25,
     }) {
-        Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every),
-        Command::Bench { steps, boxes, no_tower } => bench(steps, boxes, !no_tower),
+        Command::Demo { json, thesis_kinetic, every } => demo(json, thesis_kinetic, every as f32),
+        Command::Bench { steps, boxes, no_tower } => bench(steps, boxes.into(), !no_tower),
         Command::Mesh { out } => write_meshes(&out).map_err(|e| e.to_string()),
         Command::Scenario { scenario: name, all, trace, json } => {
             match scenario(name.as_deref(), all, trace.as_deref(), json) {

@@ -142,3 +142,33 @@ fn replay_lists_the_tracking_glitches_it_left_out() {
     let (_, json, _) = run(&["replay", &file, "--json"]);
     names(&json, &["\"skipped\": [", "frame 2: timestamp goes backwards"]);
 }
+
+#[test]
+fn numbers_out_of_range_are_named_with_their_argument() {
+    let e = usage_error(&["demo", "--every", "0"]);
+    names(e, &["'--every <EVERY>'", "must be a finite number > 0, got 0"]);
+    let e = usage_error(&["demo", "--every", "nan"]);
+    names(e, &["'--every <EVERY>'", "got nan"]);
+    let e = usage_error(&["replay", "data/leap/pinch.json.lz", "--grace=-0.5"]);
+    names(e, &["'--grace <GRACE>'", "must be a finite number ≥ 0, got -0.5"]);
+    let e = usage_error(&["bench", "--boxes", "17"]);
+    names(e, &["'--boxes <BOXES>'", "17 is not in 1..=16"]);
+    let e = usage_error(&["live", "--seconds=-3"]);
+    names(e, &["'--seconds <SECONDS>'", "must be a finite number > 0, got -3"]);
+}
+
+#[test]
+fn a_replay_scene_brings_its_gravity() {
+    // A weightless scene: its box, far from the hand, stays where it is.
+    let dir = Scratch::new("cli-gravity");
+    let scene = r#"{"gravity": [0, 0, 0],
+        "objects": [{"name": "box", "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}},
+                     "mass": 0.1, "material": "wood", "position": [1.0, 0.5, 1.0]}]}"#;
+    let file = dir.file("floating.json", scene).display().to_string();
+    let (code, json, stderr) =
+        run(&["replay", "data/leap/pinch.json.lz", "--scene", &file, "--json"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let summary: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let moved = summary["objects"][0]["displacement"].as_f64().unwrap();
+    assert!(moved < 1e-6, "the weightless box moved {moved} m");
+}
