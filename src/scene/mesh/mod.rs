@@ -101,16 +101,25 @@ impl TriangleMesh {
     /// its units), then [`Self::check`]s it.
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
-        let fail = |problem: MeshProblem| MeshError::new(&file, problem.to_string());
-        let ext = path
+        let bytes = std::fs::read(path).map_err(|e| MeshError::new(&file, e.to_string()))?;
+        Self::parse(&file, &bytes, path.parent().unwrap_or(Path::new(".")))
+    }
+
+    /// Parses the bytes of a mesh file in the format its name's extension
+    /// says (`.obj`, `.stl`, `.gltf` or `.glb`), then [`Self::check`]s it.
+    /// A glTF's external buffer files are read relative to `dir`; an OBJ's
+    /// material libraries are not read.
+    pub fn parse(file: &str, bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshError> {
+        let fail = |problem: MeshProblem| MeshError::new(file, problem.to_string());
+        let ext = Path::new(file)
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase)
             .unwrap_or_default();
         let mesh = match ext.as_str() {
-            "obj" => load_obj(path),
-            "stl" => load_stl(path),
-            "gltf" | "glb" => load_gltf(path),
+            "obj" => parse_obj(bytes),
+            "stl" => parse_stl(bytes),
+            "gltf" | "glb" => parse_gltf(bytes, dir),
             other => return Err(fail(MeshProblem::UnknownFormat(other.to_string()))),
         }
         .map_err(fail)?;
@@ -236,9 +245,12 @@ impl TriangleMesh {
     }
 }
 
-fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
+fn parse_obj(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
     let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-    let (models, _) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
+    // Materials are not used, so material libraries are not read.
+    let (models, _) =
+        tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |_| Ok(Default::default()))
+            .map_err(|e| e.to_string())?;
     let mut mesh = TriangleMesh::default();
     for model in models {
         let m = model.mesh;
@@ -250,9 +262,9 @@ fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     Ok(mesh)
 }
 
-fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
-    let mut file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    let stl = stl_io::read_stl(&mut file).map_err(|e| format!("not a readable STL file: {e}"))?;
+fn parse_stl(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
+    let stl = stl_io::read_stl(&mut std::io::Cursor::new(bytes))
+        .map_err(|e| format!("not a readable STL file: {e}"))?;
     Ok(TriangleMesh {
         vertices: stl.vertices.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
         triangles: stl.faces.iter().map(|f| f.vertices.map(|k| k as u32)).collect(),
@@ -261,13 +273,11 @@ fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
 
 /// Every mesh primitive of the default scene (or of all root nodes), with
 /// the node transforms applied. Buffers may be the GLB's binary chunk,
-/// files next to the `.gltf`, or base64 data URIs.
-fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
+/// files in `dir` (next to the `.gltf`), or base64 data URIs.
+fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
-    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
     let gltf =
-        gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
-    let dir = path.parent().unwrap_or(Path::new("."));
+        gltf::Gltf::from_slice(bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
     let mut buffers = Vec::new();
     for buffer in gltf.buffers() {
         let data = match buffer.source() {
