@@ -59,7 +59,11 @@ impl Playback {
                 return Err(fail(i, "timestamp".into(), why));
             }
             last = frame.timestamp_us;
-            let t = (frame.timestamp_us - start) as f64 * 1e-6;
+            let Some(elapsed) = frame.timestamp_us.checked_sub(start) else {
+                let why = format!("{} µs after {start} µs overflows", frame.timestamp_us);
+                return Err(fail(i, "timestamp".into(), why));
+            };
+            let t = elapsed as f64 * 1e-6;
             for (h, hand) in frame.hands.iter().enumerate() {
                 let bad = |e: String| fail(i, format!("hands[{h}]"), e);
                 let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
@@ -72,7 +76,9 @@ impl Playback {
                 tracks[k].samples.push((t, sample));
             }
         }
-        Ok(Playback { tracks, duration: (last - start) as f64 * 1e-6, frames: frames.len(), grace })
+        // `last - start` is the last frame's checked `elapsed`.
+        let duration = last.wrapping_sub(start) as f64 * 1e-6;
+        Ok(Playback { tracks, duration, frames: frames.len(), grace })
     }
 
     /// The state of track `index` at time `t` (s), or `None` while untracked.

@@ -65,7 +65,8 @@ impl LiveTracks {
                 break;
             };
             let start = *self.start_us.get_or_insert(frame.timestamp_us);
-            let time = (frame.timestamp_us - start) as f64 * 1e-6;
+            // Parsed timestamps are ≥ 0, so this cannot saturate.
+            let time = frame.timestamp_us.saturating_sub(start) as f64 * 1e-6;
             if time < self.newest {
                 self.dropped += 1;
                 continue;
