@@ -245,7 +245,42 @@ impl TriangleMesh {
     }
 }
 
+/// Every face, line and point index of OBJ text must name a position,
+/// texture coordinate or normal defined before it (1-based, or negative
+/// counting back). tobj does its index arithmetic unchecked, so an index of
+/// 0 or far out of range overflows it (a panic in debug builds).
+fn check_obj_indices(text: &str) -> Result<(), MeshProblem> {
+    let mut counts = [0usize; 3];
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f" | "l" | "p") => {
+                for word in words {
+                    for (k, part) in word.split('/').enumerate().take(3) {
+                        let Ok(i) = part.parse::<isize>() else { continue };
+                        if i == 0 || i.unsigned_abs() > counts[k] {
+                            let kind = ["position", "texture coordinate", "normal"][k];
+                            let why = format!(
+                                "line {}: {kind} index {i} is not one of the {} defined before it",
+                                n + 1,
+                                counts[k]
+                            );
+                            return Err(MeshProblem::Unreadable(why));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 fn parse_obj(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
+    check_obj_indices(std::str::from_utf8(bytes).map_err(|_| "an OBJ file must be UTF-8 text")?)?;
     let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
     // Materials are not used, so material libraries are not read.
     let (models, _) =
