@@ -311,6 +311,13 @@ fn parse_stl(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
 /// files in `dir` (next to the `.gltf`), or base64 data URIs.
 fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
+    // The gltf crate computes `length - 12` unchecked (a panic in debug builds).
+    if let Some(length) = bytes.strip_prefix(b"glTF").and_then(|b| b.get(4..8)) {
+        let length = u32::from_le_bytes(length.try_into().expect("4 bytes"));
+        if length < 12 {
+            return Err(format!("GLB length {length} is shorter than its 12-byte header").into());
+        }
+    }
     let gltf =
         gltf::Gltf::from_slice(bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
     let mut buffers = Vec::new();
@@ -339,12 +346,24 @@ fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
     };
     let mut stack: Vec<(gltf::Node, glam::Mat4)> =
         roots.into_iter().map(|n| (n, glam::Mat4::IDENTITY)).collect();
+    let mut visits = 0;
     while let Some((node, parent)) = stack.pop() {
+        visits += 1;
+        if visits > gltf.nodes().len() {
+            return Err("the node hierarchy is not a tree (a node is its own ancestor)".into());
+        }
         let transform = parent * glam::Mat4::from_cols_array_2d(&node.transform().matrix());
         if let Some(m) = node.mesh() {
             for primitive in m.primitives() {
                 if primitive.mode() != gltf::mesh::Mode::Triangles {
                     continue;
+                }
+                use gltf::accessor::{DataType, Dimensions};
+                let Some(positions) = primitive.get(&gltf::Semantic::Positions) else { continue };
+                check_accessor(&positions, &buffers, &[DataType::F32], Dimensions::Vec3)?;
+                if let Some(indices) = primitive.indices() {
+                    let types = [DataType::U8, DataType::U16, DataType::U32];
+                    check_accessor(&indices, &buffers, &types, Dimensions::Scalar)?;
                 }
                 let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
                 let Some(positions) = reader.read_positions() else { continue };
@@ -355,14 +374,66 @@ fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
                     Some(i) => i.into_u32().collect(),
                     None => (0..count).collect(),
                 };
+                // An index past the vertices saturates and fails `check`.
                 mesh.triangles.extend(
-                    indices.chunks_exact(3).map(|t| [base + t[0], base + t[1], base + t[2]]),
+                    indices
+                        .chunks_exact(3)
+                        .map(|t| [t[0], t[1], t[2]].map(|i| base.saturating_add(i))),
                 );
             }
         }
         stack.extend(node.children().map(|c| (c, transform)));
     }
     Ok(mesh)
+}
+
+/// The gltf crate's reader trusts an accessor's type and extent (it
+/// panics on float indices, and on a count or stride that overflows): so
+/// its element type, and that its elements lie within its buffer view and
+/// the view within its buffer, are checked first. Sparse accessors are not
+/// read.
+fn check_accessor(
+    accessor: &gltf::Accessor,
+    buffers: &[Vec<u8>],
+    types: &[gltf::accessor::DataType],
+    dimensions: gltf::accessor::Dimensions,
+) -> Result<(), MeshProblem> {
+    let fail =
+        |why: String| MeshProblem::Unreadable(format!("accessor {}: {why}", accessor.index()));
+    let (ty, dims) = (accessor.data_type(), accessor.dimensions());
+    if !types.contains(&ty) || dims != dimensions {
+        return Err(fail(format!("{dims:?} of {ty:?}, expected {dimensions:?} of {types:?}")));
+    }
+    if accessor.sparse().is_some() {
+        return Err(fail("sparse accessors are not supported".into()));
+    }
+    let Some(view) = accessor.view() else { return Ok(()) };
+    let size = accessor.size();
+    let stride = view.stride().unwrap_or(size);
+    let end = accessor
+        .count()
+        .checked_sub(1)
+        .and_then(|n| n.checked_mul(stride))
+        .and_then(|n| n.checked_add(size))
+        .and_then(|n| n.checked_add(accessor.offset()));
+    let buffer = buffers.get(view.buffer().index()).map_or(0, Vec::len);
+    let view_end = view.offset().checked_add(view.length());
+    match (end, view_end) {
+        (Some(end), Some(view_end))
+            if stride >= size && end <= view.length() && view_end <= buffer =>
+        {
+            Ok(())
+        }
+        _ => Err(fail(format!(
+            "{} elements of {size} bytes every {stride} from byte {} do not fit buffer view {} \
+             ({} bytes from byte {} of a {buffer}-byte buffer)",
+            accessor.count(),
+            accessor.offset(),
+            view.index(),
+            view.length(),
+            view.offset()
+        ))),
+    }
 }
 
 #[cfg(test)]
