@@ -58,8 +58,12 @@ pub enum MeshProblem {
         /// Its bounding box's size (m).
         size: Vec3,
     },
-    /// The voxel size is not positive, or would make too many cells.
-    #[error("voxel size {voxel} m is not positive or too small for a mesh {size:?} m across")]
+    /// The voxel size is not positive, would make too many cells, or is
+    /// larger than the mesh.
+    #[error(
+        "voxel size {voxel} m is not positive, or too small or too large for a mesh {size:?} m \
+         across"
+    )]
     VoxelSize {
         /// The voxel size asked for (m).
         voxel: f32,
@@ -195,7 +199,10 @@ impl TriangleMesh {
         use rapier3d::parry::transformation::voxelization::{FillMode, VoxelSet};
         let (lo, hi) = self.bounds();
         let cells = ((hi - lo) / voxel).ceil();
-        if !(voxel.is_finite() && voxel > 0.0) || cells.x * cells.y * cells.z > 4.0e6 {
+        // A voxel larger than the mesh fills nothing; at 1e19 m, f32 rounding
+        // once put one 1e19 m box "inside" a 6 cm mesh.
+        let too_large = voxel > (hi - lo).max_element();
+        if !(voxel.is_finite() && voxel > 0.0) || too_large || cells.x * cells.y * cells.z > 4.0e6 {
             return Err(MeshProblem::VoxelSize { voxel, size: hi - lo });
         }
         let set = VoxelSet::with_voxel_size(
