@@ -52,7 +52,8 @@ pub enum MeshProblem {
         /// How many vertices there are.
         vertices: u32,
     },
-    /// The mesh is flat along some axis, so it has no inside.
+    /// The mesh is flat along some axis (or all but vanishingly small), so
+    /// it has no inside.
     #[error("the mesh has no volume: it is flat ({size:?} across)")]
     Flat {
         /// Its bounding box's size (m).
@@ -132,7 +133,8 @@ impl TriangleMesh {
     }
 
     /// A usable solid: at least one triangle, finite vertices, indices in
-    /// range, and a non-zero volume (not flat along any axis).
+    /// range, and a volume: no axis shorter than 1e-6 of the longest, nor
+    /// than 1e-9 (in the file's units).
     pub fn check(&self) -> Result<(), MeshProblem> {
         if self.triangles.is_empty() {
             return Err(MeshProblem::NoTriangles);
@@ -147,7 +149,8 @@ impl TriangleMesh {
         }
         let (lo, hi) = self.bounds();
         let size = hi - lo;
-        if size.min_element() <= 1e-6 * size.max_element().max(f32::MIN_POSITIVE) {
+        // Absolutely too: parry's voxelization asserts on a 1e-39 mesh.
+        if size.min_element() <= (1e-6 * size.max_element()).max(1e-9) {
             return Err(MeshProblem::Flat { size });
         }
         Ok(())
@@ -325,12 +328,28 @@ fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
             return Err(format!("GLB length {length} is shorter than its 12-byte header").into());
         }
     }
-    let gltf =
-        gltf::Gltf::from_slice(bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
+    let unreadable = |e: gltf::Error| format!("not a readable glTF file: {e}");
+    let gltf::Gltf { document, blob } =
+        gltf::Gltf::from_slice_without_validation(bytes).map_err(unreadable)?;
+    // gltf-json's validation indexes a primitive's POSITION accessor unchecked.
+    let json = document.into_json();
+    for (m, mesh) in json.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            if let Some(a) =
+                primitive.attributes.values().find(|a| a.value() >= json.accessors.len())
+            {
+                let n = json.accessors.len();
+                return Err(
+                    format!("mesh {m} primitive {p}: accessor {a} is not one of {n}").into()
+                );
+            }
+        }
+    }
+    let gltf = gltf::Document::from_json(json).map_err(unreadable)?;
     let mut buffers = Vec::new();
     for buffer in gltf.buffers() {
         let data = match buffer.source() {
-            gltf::buffer::Source::Bin => gltf.blob.clone().ok_or("the GLB has no binary chunk")?,
+            gltf::buffer::Source::Bin => blob.clone().ok_or("the GLB has no binary chunk")?,
             gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
                 Some(rest) => {
                     let (_, b64) = rest
