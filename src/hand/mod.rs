@@ -286,8 +286,12 @@ pub enum PoseError {
         /// The point's largest absolute coordinate (m).
         value: f32,
     },
-    /// A capsule radius is zero or negative.
-    #[error("hand {hand}: bone {bone}: radius {radius} m must be positive")]
+    /// A capsule radius is zero or negative, or larger than
+    /// [`MAX_COORDINATE`].
+    #[error(
+        "hand {hand}: bone {bone}: radius {radius} m must be positive and at most \
+         {MAX_COORDINATE} m"
+    )]
     BadRadius {
         /// The hand ([`HandId`] number).
         hand: u32,
@@ -306,8 +310,12 @@ pub enum PoseError {
         /// Where its joints coincide: the joint nearer the palm (world, m).
         at: Vec3,
     },
-    /// A palm half extent is zero or negative.
-    #[error("hand {hand}: bone palm: half extents {half_extents:?} must all be positive")]
+    /// A palm half extent is zero or negative, or larger than
+    /// [`MAX_COORDINATE`].
+    #[error(
+        "hand {hand}: bone palm: half extents {half_extents:?} must all be positive and at most \
+         {MAX_COORDINATE} m"
+    )]
     BadPalmExtents {
         /// The hand ([`HandId`] number).
         hand: u32,
@@ -388,7 +396,8 @@ impl HandPose {
     }
 
     /// Checks that every number is usable by the physics: finite, within
-    /// [`MAX_COORDINATE`], positive radii and extents, non-degenerate bones.
+    /// [`MAX_COORDINATE`], radii and extents positive and at most that,
+    /// non-degenerate bones.
     pub fn validate(&self, hand: u32) -> Result<(), PoseError> {
         let point = |bone: Bone, field: &'static str, v: Vec3| -> Result<(), PoseError> {
             if !v.is_finite() {
@@ -405,7 +414,11 @@ impl HandPose {
         if !palm.half_extents.is_finite() {
             return Err(PoseError::NonFinite { hand, bone: Bone::Palm, field: "half_extents" });
         }
-        if palm.half_extents.min_element() <= 0.0 {
+        // A bone larger than the world's extent only makes the contact
+        // queries fail (parry's EPA panics on a 1e20 m palm).
+        if palm.half_extents.min_element() <= 0.0
+            || palm.half_extents.max_element() > MAX_COORDINATE
+        {
             return Err(PoseError::BadPalmExtents { hand, half_extents: palm.half_extents });
         }
         if !palm.rotation.is_finite() {
@@ -421,7 +434,7 @@ impl HandPose {
             if !c.radius.is_finite() {
                 return Err(PoseError::NonFinite { hand, bone, field: "radius" });
             }
-            if c.radius <= 0.0 {
+            if c.radius <= 0.0 || c.radius > MAX_COORDINATE {
                 return Err(PoseError::BadRadius { hand, bone, radius: c.radius });
             }
             if (c.b - c.a).length() < MIN_BONE_LENGTH {

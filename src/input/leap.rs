@@ -237,6 +237,12 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
         .get("timestamp")
         .and_then(Value::as_i64)
         .ok_or_else(|| err(source, Some(index), "timestamp", "missing or not an integer (µs)"))?;
+    // The service counts µs from its start; a negative time would make
+    // differences between frames overflow.
+    if timestamp < 0 {
+        let why = format!("must be ≥ 0 µs, got {timestamp}");
+        return Err(err(source, Some(index), "timestamp", why));
+    }
     let hands_json = f.get("hands").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);
     let pointables =
         f.get("pointables").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);

@@ -65,22 +65,7 @@ impl LiveLeap {
                 _ => continue,
             };
             let index = self.frames + self.skipped;
-            let parsed = serde_json::from_str::<Value>(text.as_str())
-                .map_err(|e| InputError {
-                    source_name: self.url.clone(),
-                    frame: Some(index),
-                    field: "json".into(),
-                    reason: crate::file_error::json_reason(&e),
-                })
-                .and_then(|v| {
-                    if v.get("timestamp").is_none()
-                        && (v.get("version").is_some() || v.get("event").is_some())
-                    {
-                        Ok(None)
-                    } else {
-                        leap::frame(&self.url, index, &v).map(Some)
-                    }
-                });
+            let parsed = parse_message(&self.url, index, text.as_str());
             match parsed {
                 Ok(Some(frame)) => {
                     self.frames += 1;
@@ -93,5 +78,27 @@ impl LiveLeap {
                 }
             }
         }
+    }
+}
+
+/// Parses one text message of the service's stream: `Ok(Some(frame))` for a
+/// protocol-v6 frame, `Ok(None)` for a message that is not a frame (the
+/// version greeting, an event), and an error naming `source`, message
+/// `index` and the field for a malformed frame.
+pub fn parse_message(
+    source: &str,
+    index: usize,
+    text: &str,
+) -> Result<Option<TrackingFrame>, InputError> {
+    let v = serde_json::from_str::<Value>(text).map_err(|e| InputError {
+        source_name: source.to_string(),
+        frame: Some(index),
+        field: "json".into(),
+        reason: crate::file_error::json_reason(&e),
+    })?;
+    if v.get("timestamp").is_none() && (v.get("version").is_some() || v.get("event").is_some()) {
+        Ok(None)
+    } else {
+        leap::frame(source, index, &v).map(Some)
     }
 }

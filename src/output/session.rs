@@ -134,10 +134,18 @@ impl Session {
     /// Reads a session file written by [`Self::save`], and checks its
     /// config.
     pub fn load(path: &Path) -> Result<Session, SessionError> {
-        let fail = |reason: String| SessionError::File { path: path.display().to_string(), reason };
-        let text = std::fs::read_to_string(path).map_err(|e| fail(e.to_string()))?;
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| SessionError::File { path: file.clone(), reason: e.to_string() })?;
+        Self::parse(&file, &text)
+    }
+
+    /// Parses session text (`file` names it in errors) and checks its
+    /// format marker. The calls themselves are checked when replayed.
+    pub fn parse(file: &str, text: &str) -> Result<Session, SessionError> {
+        let fail = |reason: String| SessionError::File { path: file.to_string(), reason };
         let session: Session =
-            serde_json::from_str(&text).map_err(|e| fail(crate::file_error::json_reason(&e)))?;
+            serde_json::from_str(text).map_err(|e| fail(crate::file_error::json_reason(&e)))?;
         if session.format != FORMAT {
             return Err(fail(format!("format is \"{}\", expected \"{FORMAT}\"", session.format)));
         }

@@ -108,6 +108,18 @@ impl MeshShape {
             ObjectError::new(object, f("file"), why)
         })?;
         let mesh = self.mesh.scaled(self.scale);
+        // Scaling can overflow to infinity or shrink the mesh to nothing.
+        let (lo, hi) = mesh.bounds();
+        let extent = lo.abs().max(hi.abs()).max_element();
+        if !(extent <= crate::hand::MAX_COORDINATE && mesh.check().is_ok()) {
+            let why = format!(
+                "{} scales the mesh to {extent} m from its origin: it must stay within {} m and \
+                 keep a volume",
+                self.scale,
+                crate::hand::MAX_COORDINATE
+            );
+            return Err(ObjectError::new(object, f("scale"), why));
+        }
         Ok(match self.body {
             MeshBody::Voxels { size } => {
                 positive(object, &f("body.Voxels.size"), size)?;
@@ -135,11 +147,10 @@ impl MeshShape {
                     concavity,
                     ..Default::default()
                 };
-                SharedShape::convex_decomposition_with_params(
-                    &mesh.vertices,
-                    &mesh.triangles,
-                    &params,
-                )
+                convex_parts(&mesh, &params).ok_or_else(|| {
+                    let why = "V-HACD found no convex part (the mesh is too small or degenerate)";
+                    ObjectError::new(object, f("body.ConvexParts"), why)
+                })?
             }
             MeshBody::TriMesh => {
                 SharedShape::trimesh(mesh.vertices, mesh.triangles).map_err(|e| {
@@ -148,6 +159,24 @@ impl MeshShape {
             }
         })
     }
+}
+
+/// The mesh's convex parts by V-HACD, as
+/// `SharedShape::convex_decomposition_with_params` makes them, or `None`
+/// when there are none (parry would panic on the empty compound).
+fn convex_parts(
+    mesh: &super::mesh::TriangleMesh,
+    params: &rapier3d::parry::transformation::vhacd::VHACDParameters,
+) -> Option<SharedShape> {
+    use rapier3d::parry::transformation::vhacd::VHACD;
+    let decomposition = VHACD::decompose(params, &mesh.vertices, &mesh.triangles, true);
+    let parts: Vec<(Pose, SharedShape)> = decomposition
+        .compute_exact_convex_hulls(&mesh.vertices, &mesh.triangles)
+        .into_iter()
+        .filter_map(|(vertices, indices)| SharedShape::convex_mesh(vertices, &indices))
+        .map(|part| (Pose::IDENTITY, part))
+        .collect();
+    (!parts.is_empty()).then(|| SharedShape::compound(parts))
 }
 
 /// One part of a compound shape.
@@ -249,6 +278,22 @@ fn positive(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
     }
 }
 
+/// A length (m): positive, finite and at most [`crate::hand::MAX_COORDINATE`];
+/// larger shapes only make the contact queries fail (parry's EPA panics on a
+/// 1e20 m capsule).
+fn size(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
+    if v.is_finite() && v > 0.0 && v <= crate::hand::MAX_COORDINATE {
+        Ok(())
+    } else {
+        let max = crate::hand::MAX_COORDINATE;
+        Err(ObjectError::new(
+            object,
+            field,
+            format!("must be positive and at most {max} m, got {v}"),
+        ))
+    }
+}
+
 pub(crate) fn finite_vec(object: &str, field: &str, v: Vec3) -> Result<(), ObjectError> {
     if v.is_finite() && v.abs().max_element() <= crate::hand::MAX_COORDINATE {
         Ok(())
@@ -281,17 +326,17 @@ impl ShapeDesc {
                 SharedShape::cuboid(h.x, h.y, h.z)
             }
             ShapeDesc::Sphere { radius } => {
-                positive(object, &format!("{field}.radius"), *radius)?;
+                size(object, &format!("{field}.radius"), *radius)?;
                 SharedShape::ball(*radius)
             }
             ShapeDesc::Capsule { half_height, radius } => {
-                positive(object, &format!("{field}.half_height"), *half_height)?;
-                positive(object, &format!("{field}.radius"), *radius)?;
+                size(object, &format!("{field}.half_height"), *half_height)?;
+                size(object, &format!("{field}.radius"), *radius)?;
                 SharedShape::capsule_y(*half_height, *radius)
             }
             ShapeDesc::Cylinder { half_height, radius } => {
-                positive(object, &format!("{field}.half_height"), *half_height)?;
-                positive(object, &format!("{field}.radius"), *radius)?;
+                size(object, &format!("{field}.half_height"), *half_height)?;
+                size(object, &format!("{field}.radius"), *radius)?;
                 SharedShape::cylinder(*half_height, *radius)
             }
             ShapeDesc::Compound(parts) => {

@@ -100,7 +100,7 @@ fn mesh_objects_name_the_object_the_file_and_the_problem() {
     let e = mesh_scene_error(&dir, "tet.obj", r#"{"Voxels": {"size": 1e-9}}"#);
     names(e, &["object 'part': shape.Mesh.body.Voxels.size: voxel size ", "too small"]);
     let e = mesh_scene_error(&dir, "tet.obj", r#"{"Voxels": {"size": 5}}"#);
-    names(e, &["object 'part': shape.Mesh.body.Voxels.size: ", "leaves no voxel inside"]);
+    names(e, &["object 'part': shape.Mesh.body.Voxels.size: voxel size 5 m", "too large"]);
     let e = mesh_scene_error(&dir, "tet.obj", r#"{"ConvexParts": {"concavity": 0}}"#);
     names(e, &["object 'part': shape.Mesh.body.ConvexParts.concavity: ", "got 0"]);
     let e = mesh_scene_error(&dir, "tet.obj", r#""TriMesh""#);

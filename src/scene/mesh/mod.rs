@@ -56,14 +56,19 @@ pub enum MeshProblem {
         /// How many vertices there are.
         vertices: u32,
     },
-    /// The mesh is flat along some axis, so it has no inside.
+    /// The mesh is flat along some axis (or all but vanishingly small), so
+    /// it has no inside.
     #[error("the mesh has no volume: it is flat ({size:?} across)")]
     Flat {
         /// Its bounding box's size (m).
         size: Vec3,
     },
-    /// The voxel size is not positive, or would make too many cells.
-    #[error("voxel size {voxel} m is not positive or too small for a mesh {size:?} m across")]
+    /// The voxel size is not positive, would make too many cells, or is
+    /// larger than the mesh.
+    #[error(
+        "voxel size {voxel} m is not positive, or too small or too large for a mesh {size:?} m \
+         across"
+    )]
     VoxelSize {
         /// The voxel size asked for (m).
         voxel: f32,
@@ -105,16 +110,25 @@ impl TriangleMesh {
     /// its units), then [`Self::check`]s it.
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
-        let fail = |problem: MeshProblem| MeshError::new(&file, problem.to_string());
-        let ext = path
+        let bytes = std::fs::read(path).map_err(|e| MeshError::new(&file, e.to_string()))?;
+        Self::parse(&file, &bytes, path.parent().unwrap_or(Path::new(".")))
+    }
+
+    /// Parses the bytes of a mesh file in the format its name's extension
+    /// says (`.obj`, `.stl`, `.gltf` or `.glb`), then [`Self::check`]s it.
+    /// A glTF's external buffer files are read relative to `dir`; an OBJ's
+    /// material libraries are not read.
+    pub fn parse(file: &str, bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshError> {
+        let fail = |problem: MeshProblem| MeshError::new(file, problem.to_string());
+        let ext = Path::new(file)
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase)
             .unwrap_or_default();
         let mesh = match ext.as_str() {
-            "obj" => load_obj(path),
-            "stl" => load_stl(path),
-            "gltf" | "glb" => load_gltf(path),
+            "obj" => parse_obj(bytes),
+            "stl" => parse_stl(bytes),
+            "gltf" | "glb" => parse_gltf(bytes, dir),
             other => return Err(fail(MeshProblem::UnknownFormat(other.to_string()))),
         }
         .map_err(fail)?;
@@ -123,7 +137,8 @@ impl TriangleMesh {
     }
 
     /// A usable solid: at least one triangle, finite vertices, indices in
-    /// range, and a non-zero volume (not flat along any axis).
+    /// range, and a volume: no axis shorter than 1e-6 of the longest, nor
+    /// than 1e-9 (in the file's units).
     pub fn check(&self) -> Result<(), MeshProblem> {
         if self.triangles.is_empty() {
             return Err(MeshProblem::NoTriangles);
@@ -138,7 +153,8 @@ impl TriangleMesh {
         }
         let (lo, hi) = self.bounds();
         let size = hi - lo;
-        if size.min_element() <= 1e-6 * size.max_element().max(f32::MIN_POSITIVE) {
+        // Absolutely too: parry's voxelization asserts on a 1e-39 mesh.
+        if size.min_element() <= (1e-6 * size.max_element()).max(1e-9) {
             return Err(MeshProblem::Flat { size });
         }
         Ok(())
@@ -190,7 +206,10 @@ impl TriangleMesh {
         use rapier3d::parry::transformation::voxelization::{FillMode, VoxelSet};
         let (lo, hi) = self.bounds();
         let cells = ((hi - lo) / voxel).ceil();
-        if !(voxel.is_finite() && voxel > 0.0) || cells.x * cells.y * cells.z > 4.0e6 {
+        // A voxel larger than the mesh fills nothing; at 1e19 m, f32 rounding
+        // once put one 1e19 m box "inside" a 6 cm mesh.
+        let too_large = voxel > (hi - lo).max_element();
+        if !(voxel.is_finite() && voxel > 0.0) || too_large || cells.x * cells.y * cells.z > 4.0e6 {
             return Err(MeshProblem::VoxelSize { voxel, size: hi - lo });
         }
         let set = VoxelSet::with_voxel_size(
@@ -240,9 +259,47 @@ impl TriangleMesh {
     }
 }
 
-fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
+/// Every face, line and point index of OBJ text must name a position,
+/// texture coordinate or normal defined before it (1-based, or negative
+/// counting back). tobj does its index arithmetic unchecked, so an index of
+/// 0 or far out of range overflows it (a panic in debug builds).
+fn check_obj_indices(text: &str) -> Result<(), MeshProblem> {
+    let mut counts = [0usize; 3];
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f" | "l" | "p") => {
+                for word in words {
+                    for (k, part) in word.split('/').enumerate().take(3) {
+                        let Ok(i) = part.parse::<isize>() else { continue };
+                        if i == 0 || i.unsigned_abs() > counts[k] {
+                            let kind = ["position", "texture coordinate", "normal"][k];
+                            let why = format!(
+                                "line {}: {kind} index {i} is not one of the {} defined before it",
+                                n + 1,
+                                counts[k]
+                            );
+                            return Err(MeshProblem::Unreadable(why));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+fn parse_obj(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
+    check_obj_indices(std::str::from_utf8(bytes).map_err(|_| "an OBJ file must be UTF-8 text")?)?;
     let options = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-    let (models, _) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
+    // Materials are not used, so material libraries are not read.
+    let (models, _) =
+        tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |_| Ok(Default::default()))
+            .map_err(|e| e.to_string())?;
     let mut mesh = TriangleMesh::default();
     for model in models {
         let m = model.mesh;
@@ -254,9 +311,9 @@ fn load_obj(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     Ok(mesh)
 }
 
-fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
-    let mut file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    let stl = stl_io::read_stl(&mut file).map_err(|e| format!("not a readable STL file: {e}"))?;
+fn parse_stl(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
+    let stl = stl_io::read_stl(&mut std::io::Cursor::new(bytes))
+        .map_err(|e| format!("not a readable STL file: {e}"))?;
     Ok(TriangleMesh {
         vertices: stl.vertices.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
         triangles: stl.faces.iter().map(|f| f.vertices.map(|k| k as u32)).collect(),
@@ -265,17 +322,38 @@ fn load_stl(path: &Path) -> Result<TriangleMesh, MeshProblem> {
 
 /// Every mesh primitive of the default scene (or of all root nodes), with
 /// the node transforms applied. Buffers may be the GLB's binary chunk,
-/// files next to the `.gltf`, or base64 data URIs.
-fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
+/// files in `dir` (next to the `.gltf`), or base64 data URIs.
+fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
-    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
-    let gltf =
-        gltf::Gltf::from_slice(&bytes).map_err(|e| format!("not a readable glTF file: {e}"))?;
-    let dir = path.parent().unwrap_or(Path::new("."));
+    // The gltf crate computes `length - 12` unchecked (a panic in debug builds).
+    if let Some(length) = bytes.strip_prefix(b"glTF").and_then(|b| b.get(4..8)) {
+        let length = u32::from_le_bytes(length.try_into().expect("4 bytes"));
+        if length < 12 {
+            return Err(format!("GLB length {length} is shorter than its 12-byte header").into());
+        }
+    }
+    let unreadable = |e: gltf::Error| format!("not a readable glTF file: {e}");
+    let gltf::Gltf { document, blob } =
+        gltf::Gltf::from_slice_without_validation(bytes).map_err(unreadable)?;
+    // gltf-json's validation indexes a primitive's POSITION accessor unchecked.
+    let json = document.into_json();
+    for (m, mesh) in json.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            if let Some(a) =
+                primitive.attributes.values().find(|a| a.value() >= json.accessors.len())
+            {
+                let n = json.accessors.len();
+                return Err(
+                    format!("mesh {m} primitive {p}: accessor {a} is not one of {n}").into()
+                );
+            }
+        }
+    }
+    let gltf = gltf::Document::from_json(json).map_err(unreadable)?;
     let mut buffers = Vec::new();
     for buffer in gltf.buffers() {
         let data = match buffer.source() {
-            gltf::buffer::Source::Bin => gltf.blob.clone().ok_or_else(|| {
+            gltf::buffer::Source::Bin => blob.clone().ok_or_else(|| {
                 format!("buffer {} has no uri, and the file no GLB binary chunk", buffer.index())
             })?,
             gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
@@ -300,12 +378,24 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
     };
     let mut stack: Vec<(gltf::Node, glam::Mat4)> =
         roots.into_iter().map(|n| (n, glam::Mat4::IDENTITY)).collect();
+    let mut visits = 0;
     while let Some((node, parent)) = stack.pop() {
+        visits += 1;
+        if visits > gltf.nodes().len() {
+            return Err("the node hierarchy is not a tree (a node is its own ancestor)".into());
+        }
         let transform = parent * glam::Mat4::from_cols_array_2d(&node.transform().matrix());
         if let Some(m) = node.mesh() {
             for primitive in m.primitives() {
                 if primitive.mode() != gltf::mesh::Mode::Triangles {
                     continue;
+                }
+                use gltf::accessor::{DataType, Dimensions};
+                let Some(positions) = primitive.get(&gltf::Semantic::Positions) else { continue };
+                check_accessor(&positions, &buffers, &[DataType::F32], Dimensions::Vec3)?;
+                if let Some(indices) = primitive.indices() {
+                    let types = [DataType::U8, DataType::U16, DataType::U32];
+                    check_accessor(&indices, &buffers, &types, Dimensions::Scalar)?;
                 }
                 let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
                 let Some(positions) = reader.read_positions() else {
@@ -325,18 +415,66 @@ fn load_gltf(path: &Path) -> Result<TriangleMesh, MeshProblem> {
                         return Err(format!("mesh {mesh} primitive {primitive}: {why}").into());
                     }
                 };
-                // Saturating: an index too large for any vertex stays out
-                // of range, for `check` to report.
+                // An index past the vertices saturates and fails `check`.
                 mesh.triangles.extend(
                     indices
                         .chunks_exact(3)
-                        .map(|t| [t[0], t[1], t[2]].map(|k| base.saturating_add(k))),
+                        .map(|t| [t[0], t[1], t[2]].map(|i| base.saturating_add(i))),
                 );
             }
         }
         stack.extend(node.children().map(|c| (c, transform)));
     }
     Ok(mesh)
+}
+
+/// The gltf crate's reader trusts an accessor's type and extent (it
+/// panics on float indices, and on a count or stride that overflows): so
+/// its element type, and that its elements lie within its buffer view and
+/// the view within its buffer, are checked first. Sparse accessors are not
+/// read.
+fn check_accessor(
+    accessor: &gltf::Accessor,
+    buffers: &[Vec<u8>],
+    types: &[gltf::accessor::DataType],
+    dimensions: gltf::accessor::Dimensions,
+) -> Result<(), MeshProblem> {
+    let fail =
+        |why: String| MeshProblem::Unreadable(format!("accessor {}: {why}", accessor.index()));
+    let (ty, dims) = (accessor.data_type(), accessor.dimensions());
+    if !types.contains(&ty) || dims != dimensions {
+        return Err(fail(format!("{dims:?} of {ty:?}, expected {dimensions:?} of {types:?}")));
+    }
+    if accessor.sparse().is_some() {
+        return Err(fail("sparse accessors are not supported".into()));
+    }
+    let Some(view) = accessor.view() else { return Ok(()) };
+    let size = accessor.size();
+    let stride = view.stride().unwrap_or(size);
+    let end = accessor
+        .count()
+        .checked_sub(1)
+        .and_then(|n| n.checked_mul(stride))
+        .and_then(|n| n.checked_add(size))
+        .and_then(|n| n.checked_add(accessor.offset()));
+    let buffer = buffers.get(view.buffer().index()).map_or(0, Vec::len);
+    let view_end = view.offset().checked_add(view.length());
+    match (end, view_end) {
+        (Some(end), Some(view_end))
+            if stride >= size && end <= view.length() && view_end <= buffer =>
+        {
+            Ok(())
+        }
+        _ => Err(fail(format!(
+            "{} elements of {size} bytes every {stride} from byte {} do not fit buffer view {} \
+             ({} bytes from byte {} of a {buffer}-byte buffer)",
+            accessor.count(),
+            accessor.offset(),
+            view.index(),
+            view.length(),
+            view.offset()
+        ))),
+    }
 }
 
 #[cfg(test)]
