@@ -365,37 +365,8 @@ fn soak_loop(
 fn print_soak(r: &coulomb_hands::run::soak::SoakReport, json: bool) -> Result<(), RunError> {
     if json {
         println!("{}", serde_json::to_string_pretty(r).map_err(std::io::Error::other)?);
-        return Ok(());
-    }
-    let mib = |k: Option<u64>| {
-        k.map_or("unavailable".into(), |k| format!("{:.1} MiB", k as f64 / 1024.0))
-    };
-    println!("soaked {} for {:.1} s of wall-clock time", r.source, r.wall);
-    println!(
-        "loops: {}, steps: {} ({} a loop), simulated: {:.1} s",
-        r.loops, r.steps, r.steps_per_loop, r.simulated
-    );
-    println!("steps per second: {:.0}", r.steps_per_second);
-    println!(
-        "peak object speed: {:.3} m/s ({} in loop {}); loop peaks {:.3}-{:.3} m/s",
-        r.peak_speed,
-        r.peak_object.as_deref().unwrap_or("no object"),
-        r.peak_loop,
-        r.loop_peak_range[0],
-        r.loop_peak_range[1]
-    );
-    println!("contacts begun: {}, all values finite: {}", r.contacts_begun, r.all_finite);
-    let m = &r.memory;
-    println!(
-        "memory (RSS): start {}, after the first loop {}, end {}",
-        mib(m.start_kib),
-        mib(m.first_loop_kib),
-        mib(m.end_kib)
-    );
-    match m.growth {
-        Some(g) if m.grew => println!("memory GREW {:+.1} % since the first loop", g * 100.0),
-        Some(g) => println!("memory flat: {:+.1} % since the first loop", g * 100.0),
-        None => println!("memory growth: unavailable"),
+    } else {
+        print!("{r}");
     }
     Ok(())
 }

@@ -354,6 +354,48 @@ pub fn parse_duration(text: &str) -> Result<Duration, DurationError> {
     Duration::try_from_secs_f64(seconds).map_err(|_| range())
 }
 
+impl std::fmt::Display for SoakReport {
+    /// The report as `replay --loop` prints it, one figure a line.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let r = self;
+        let mib = |k: Option<u64>| {
+            k.map_or("unavailable".into(), |k| format!("{:.1} MiB", k as f64 / 1024.0))
+        };
+        writeln!(f, "soaked {} for {:.1} s of wall-clock time", r.source, r.wall)?;
+        writeln!(
+            f,
+            "loops: {}, steps: {} ({} a loop), simulated: {:.1} s",
+            r.loops, r.steps, r.steps_per_loop, r.simulated
+        )?;
+        writeln!(f, "steps per second: {:.0}", r.steps_per_second)?;
+        writeln!(
+            f,
+            "peak object speed: {:.3} m/s ({} in loop {}); loop peaks {:.3}-{:.3} m/s",
+            r.peak_speed,
+            r.peak_object.as_deref().unwrap_or("no object"),
+            r.peak_loop,
+            r.loop_peak_range[0],
+            r.loop_peak_range[1]
+        )?;
+        writeln!(f, "contacts begun: {}, all values finite: {}", r.contacts_begun, r.all_finite)?;
+        let m = &r.memory;
+        writeln!(
+            f,
+            "memory (RSS): start {}, after the first loop {}, end {}",
+            mib(m.start_kib),
+            mib(m.first_loop_kib),
+            mib(m.end_kib)
+        )?;
+        match m.growth {
+            Some(g) if m.grew => {
+                writeln!(f, "memory GREW {:+.1} % since the first loop", g * 100.0)
+            }
+            Some(g) => writeln!(f, "memory flat: {:+.1} % since the first loop", g * 100.0),
+            None => writeln!(f, "memory growth: unavailable"),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
