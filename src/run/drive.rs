@@ -22,8 +22,10 @@ pub trait HandSource {
         None
     }
 
-    /// The hand at `t` seconds after the run began, or `None` while it is
-    /// not tracked.
+    /// The hand at `t` on the driver's clock (s), or `None` while it is
+    /// not tracked. The clock is the world's time: it starts at 0 for a
+    /// fresh world, and at the world's time when a [`Driver`] takes one
+    /// that has already run.
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError>;
 
     /// Whether the source has nothing more to give (a live stream that
