@@ -1,6 +1,7 @@
 //! `coulomb-hands`: the headless command line.
 
 use clap::{Parser, Subcommand};
+use coulomb_hands::output::trace::TraceFile;
 use coulomb_hands::run::bench::{held_boxes_scene, time_steps};
 use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::{InteractionConfig, KineticFriction, RunError};
@@ -306,12 +307,10 @@ fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
         "frames: {}, hands: {}, duration: {:.2} s, physics steps: {}",
         summary.frames, summary.hands, summary.duration, summary.steps
     );
-    if !summary.skipped.is_empty() {
-        println!("left out {} tracking glitches:", summary.skipped.len());
-        for line in &summary.skipped {
-            println!("  {line}");
-        }
-    }
+    let n = summary.skipped.len();
+    let more = if n > 10 { " (the first 10; all in --json)" } else { "" };
+    (n > 0).then(|| println!("left out {n} tracking glitches{more}:"));
+    summary.skipped.iter().take(10).for_each(|line| println!("  {line}"));
     if let Some(s) = site {
         println!(
             "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",
@@ -372,8 +371,8 @@ fn print_soak(r: &coulomb_hands::run::soak::SoakReport, json: bool) -> Result<()
 }
 
 /// A buffered output file; its errors name it.
-fn create(path: &std::path::Path) -> Result<coulomb_hands::output::trace::TraceFile, RunError> {
-    Ok(coulomb_hands::output::trace::TraceFile::create(path)?)
+fn create(path: &std::path::Path) -> Result<TraceFile, RunError> {
+    Ok(TraceFile::create(path)?)
 }
 
 fn live(url: &str, seconds: f64, device: glam::Vec3) -> Result<(), RunError> {

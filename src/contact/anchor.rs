@@ -21,6 +21,9 @@ pub(crate) struct Anchor {
     pub samples: Vec<(Vec3, Vec3)>,
     /// The patch's radius on the object (m).
     pub radius: f32,
+    /// Whether the patch holds the object as a rigid support: a planar
+    /// face of the object on the interior of a palm face.
+    pub rigid: bool,
     /// The penetration depth the force saw last step (m), for the
     /// penetration-speed limit.
     pub limited_depth: f32,
@@ -73,6 +76,18 @@ impl BoneAnchor {
     #[inline]
     pub fn is_flat(self) -> bool {
         matches!(self, BoneAnchor::Palm { face: Some(_), .. })
+    }
+
+    /// The widest patch, up to `radius` (m), that stays on the palm face p
+    /// presses: a ring must not hold an object up beyond the palm's edge.
+    fn room_on_face(self, palm: &Palm, radius: f32) -> f32 {
+        let BoneAnchor::Palm { local, face: Some(face) } = self else { return radius };
+        let h = palm.half_extents;
+        (0..3)
+            .filter(|&j| face[j] == 0.0)
+            .map(|j| h[j] - local[j].abs())
+            .fold(radius, f32::min)
+            .max(0.0)
     }
 
     /// The contact normal for an object surface normal `n` (see [`Site::n`]).
@@ -178,10 +193,13 @@ impl Anchor {
         let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, c, n);
         // A finger's pad is soft and round: pressed near an edge, it wraps
         // round it. The palm's wide flat ring must fit the face it is on.
-        let radius = match bone.skin_class() {
-            SkinClass::Finger => patch.finger_radius,
-            SkinClass::Thumb => patch.thumb_radius,
-            SkinClass::Palm => patch::fit_to_face(object, c, n, patch.samples, patch.palm_radius),
+        let (radius, planar) = match bone.skin_class() {
+            SkinClass::Finger => (patch.finger_radius, false),
+            SkinClass::Thumb => (patch.thumb_radius, false),
+            SkinClass::Palm => {
+                let room = bone_anchor.room_on_face(&motion.palm_now, patch.palm_radius);
+                patch::fit_to_face(object, c, n, patch.samples, room)
+            }
         };
         let rot_inv = bone_anchor.rotation(motion.now, &motion.palm_now).inverse();
         let samples = patch::sample_offsets(n, patch.samples, radius)
@@ -197,6 +215,7 @@ impl Anchor {
             bone: bone_anchor,
             samples,
             radius,
+            rigid: planar && bone_anchor.is_flat(),
             limited_depth: 0.0,
         }
     }

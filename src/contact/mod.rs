@@ -276,7 +276,7 @@ impl Contact {
         let pose = &object.pose;
         let anchor = &self.anchor;
         let center = pose.transform_point(anchor.c_local);
-        let rocking = if anchor.bone.is_flat() {
+        let rocking = if anchor.rigid {
             patch::Rocking::rigid(object, anchor.samples.len(), anchor.radius, settings)
         } else {
             patch::Rocking::soft(object)

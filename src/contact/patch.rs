@@ -59,28 +59,38 @@ const FIT_STEPS: usize = 6;
 /// face of C (normal `n`): a 3 cm palm ring on a 2 cm cube shrinks to the
 /// cube's face, instead of wrapping its samples round the edges onto the
 /// sides, where they would press sideways. Found by bisection; a ring that
-/// fits nowhere leaves every sample at C.
+/// fits nowhere leaves every sample at C. Also says whether the face is
+/// planar under the ring (every sample's normal within 2.6° of C's): only
+/// then may the patch hold the object as a rigid support ([`Rocking`]); a
+/// ball or a pencil must still roll.
 pub(crate) fn fit_to_face(
     object: &ObjectView,
     c: Vec3,
     n: Vec3,
     samples: usize,
     radius: f32,
-) -> f32 {
-    let fits = |r: f32| {
-        let on_face = |o: &Vec3| surface::over_face(object.shape, &object.pose, c + *o, n, 0.6 * r);
-        sample_offsets(n, samples, r).iter().skip(1).all(on_face)
+) -> (f32, bool) {
+    let least_cos = |r: f32| {
+        let cos = |o: &Vec3| surface::face_cos(object.shape, &object.pose, c + *o, n, 0.6 * r);
+        let ring = sample_offsets(n, samples, r);
+        ring.iter().skip(1).map(cos).try_fold(1.0f32, |least, c| Some(least.min(c?)))
     };
-    if fits(radius) {
-        return radius;
+    let fits = |r: f32| least_cos(r).is_some_and(|cos| cos >= surface::SAME_FACE_COS);
+    let mut fitting = radius;
+    if !fits(radius) {
+        let mut too_big = radius;
+        fitting = 0.0;
+        for _ in 0..FIT_STEPS {
+            let mid = 0.5 * (fitting + too_big);
+            if fits(mid) { fitting = mid } else { too_big = mid }
+        }
     }
-    let (mut fitting, mut too_big) = (0.0, radius);
-    for _ in 0..FIT_STEPS {
-        let mid = 0.5 * (fitting + too_big);
-        if fits(mid) { fitting = mid } else { too_big = mid }
-    }
-    fitting
+    let planar = fitting > 0.0 && least_cos(fitting).is_some_and(|cos| cos >= PLANAR_COS);
+    (fitting, planar)
 }
+
+/// The least cosine between sample normals for a face to count as planar.
+const PLANAR_COS: f32 = 0.999;
 
 /// The per-sample forces on the object.
 ///
@@ -97,14 +107,14 @@ pub fn sample_forces(total: Vec3, deviations: &[Vec3], stiffness: f32, out: &mut
     out.extend(deviations.iter().map(|e| total / n - stiffness / n * (*e - mean)));
 }
 
-/// The share of the explicit integrator's stability bound on rocking
-/// (`dt²·K/I < 4` for a rotational stiffness K) that the rocking springs of
-/// all patches on one object may use together.
+/// `dt²·K/I` of the rocking springs of all patches on one object together,
+/// for a rotational stiffness K: 1/16 of the explicit integrator's bound
+/// (`dt²·K/I < 4`), leaving room for the contact springs and dampers.
 const ROCKING_SHARE: f32 = 0.25;
 
 /// How a patch resists rocking: the normal parts of its deviation springs.
 ///
-/// A flat object on a flat bone (a box on the palm) is held upright by
+/// A flat face on a flat bone (a box on the palm) is held upright by
 /// where the pressure sits under it, not by how soft the skin is. With the
 /// deviation springs at γ/N, a box on a palm of γ 400 N/m rocks by degrees
 /// and a 5 cm tall one topples long before it would slide. So on a flat

@@ -112,16 +112,21 @@ pub fn locate_contact(
 /// The least cosine between a patch sample's surface normal and the normal
 /// at C for the sample to count as on C's face: 30°, which lets a patch
 /// follow a gently curved surface but not wrap round an edge.
-const SAME_FACE_COS: f32 = 0.866;
+pub(crate) const SAME_FACE_COS: f32 = 0.866;
 
 /// Whether the point `q` of C's tangent plane (normal `n`) lies over C's
 /// face: straight below it, within `depth` (m) of the plane, the object's
 /// surface turns by less than 30° from `n`. A point beyond an edge finds a
 /// side face, another part of the object, or nothing.
 pub fn over_face(shape: &dyn Shape, pose: &Pose, q: Vec3, n: Vec3, depth: f32) -> bool {
+    face_cos(shape, pose, q, n, depth).is_some_and(|cos| cos >= SAME_FACE_COS)
+}
+
+/// The cosine between `n` and the object's surface normal straight below
+/// `q` (within `depth` of C's tangent plane), if the surface is there.
+pub fn face_cos(shape: &dyn Shape, pose: &Pose, q: Vec3, n: Vec3, depth: f32) -> Option<f32> {
     let lift = depth.max(1.0e-4);
-    cast(shape, pose, q + lift * n, -n, 2.0 * lift, n)
-        .is_some_and(|hit| hit.normal.dot(n) >= SAME_FACE_COS)
+    cast(shape, pose, q + lift * n, -n, 2.0 * lift, n).map(|hit| hit.normal.dot(n))
 }
 
 /// The closest surface point of the object to `q` (world).

@@ -4,7 +4,8 @@
 //!
 //! Trackers glitch, and one glitch must not cost the whole recording. What
 //! playback leaves out, it lists in [`Playback::skipped`]:
-//! * a frame whose timestamp goes backwards (a stale frame);
+//! * a frame whose timestamp goes backwards (a stale frame), or jumps
+//!   ahead of the next frames (a corrupt one);
 //! * a second hand with the same id and side in one frame;
 //! * a hand with a collapsed bone (its joints coincide): its neighbours are
 //!   interpolated across it, as across a dropout.
@@ -101,6 +102,14 @@ impl Playback {
                 skipped.push(Skipped { frame: i, hand: None, reason });
                 continue;
             }
+            if let Some(next) = contradicted(frames, i, last, grace) {
+                let reason = format!(
+                    "timestamp jumps ahead ({} after {last}), and frame {next} comes back",
+                    frame.timestamp_us
+                );
+                skipped.push(Skipped { frame: i, hand: None, reason });
+                continue;
+            }
             last = frame.timestamp_us;
             let t =
                 frame.timestamp_us.checked_sub(start).map_or(f64::INFINITY, |d| d as f64 * 1e-6);
@@ -119,7 +128,6 @@ impl Playback {
                     skipped.push(Skipped { frame: i, hand: Some(h), reason });
                     continue;
                 }
-                seen.push((hand.id, hand.side));
                 let bad = |e: String| fail(i, format!("hands[{h}]"), e);
                 let pose = hand_pose(hand, conversion).map_err(|e| bad(e.to_string()))?;
                 match pose.validate(h as u32) {
@@ -129,6 +137,7 @@ impl Playback {
                     }
                     result => result.map_err(|e| bad(e.to_string()))?,
                 }
+                seen.push((hand.id, hand.side));
                 let key = |tr: &Track| tr.id == hand.id && tr.side == hand.side;
                 let k = tracks.iter().position(key).unwrap_or_else(|| {
                     tracks.push(Track { id: hand.id, side: hand.side, samples: Vec::new() });
@@ -146,6 +155,23 @@ impl Playback {
     pub fn sample(&self, index: usize, t: f64) -> Option<HandSample> {
         interpolate(&self.tracks.get(index)?.samples, t, self.grace)
     }
+}
+
+/// How many later frames may contradict a frame's timestamp.
+const LOOK_AHEAD: usize = 3;
+
+/// For a frame `i` more than `grace` (s) ahead of `last` (the last kept),
+/// the index of a frame among the next [`LOOK_AHEAD`] whose timestamp falls
+/// back between the two: then frame `i` is the glitch, a jump ahead that
+/// the stream does not follow. Left in, it would make every later frame
+/// look stale. (A smaller step back is the later frame's: it is stale.)
+fn contradicted(frames: &[TrackingFrame], i: usize, last: i64, grace: f64) -> Option<usize> {
+    let t = frames[i].timestamp_us;
+    if (t.saturating_sub(last) as f64) * 1e-6 <= grace {
+        return None;
+    }
+    (i + 1..frames.len().min(i + 1 + LOOK_AHEAD))
+        .find(|&j| (last..t).contains(&frames[j].timestamp_us))
 }
 
 /// A hand at time `t` (s) from its samples `(time, hand)` in time order:

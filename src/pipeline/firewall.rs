@@ -7,6 +7,7 @@
 //! | statics: shape, pose, friction | [`fixed`] | `add_static`, `add_scene` |
 //! | objects: shape, pose, mass, material, γ | [`object`] | `add_object`, `add_scene` |
 //! | hand poses, the source of every contact | [`pose`] | `set_hand_pose` |
+//! | an object put at a new pose | [`placement`] | `place_object` |
 //! | the hand forces rapier integrates | [`forces`] | stage 6, `apply_forces` |
 //!
 //! A rejected call is an error naming the field and leaves the world as it
@@ -71,6 +72,18 @@ pub(super) fn pose(hand: u32, pose: &HandPose) -> Result<(), WorldError> {
     Ok(pose.validate(hand)?)
 }
 
+/// A new pose for object `name`: a finite position within range and a unit
+/// rotation, returned normalised.
+pub(super) fn placement(
+    name: &str,
+    position: Vec3,
+    rotation: glam::Quat,
+) -> Result<glam::Quat, WorldError> {
+    crate::scene::object::finite_vec(name, "position", position)?;
+    crate::scene::object::unit_quat(name, "rotation", rotation)?;
+    Ok(rotation.normalize())
+}
+
 /// The `(force, point)` pairs that may reach rapier: the finite ones.
 #[inline]
 pub(super) fn forces(forces: &[(Vec3, Vec3)]) -> impl Iterator<Item = &(Vec3, Vec3)> {
@@ -85,7 +98,7 @@ impl InteractionWorld {
     pub fn first_non_finite(&self) -> Option<String> {
         for (handle, body) in self.physics.bodies.iter() {
             let object = self.objects.iter().find(|o| o.body == handle);
-            let name = object.map_or("a static body", |o| o.name.as_str());
+            let name = object.map_or("a static body".to_string(), |o| format!("object {}", o.name));
             let pose = body.position();
             let fields = [
                 ("position", pose.translation.is_finite()),
@@ -96,7 +109,7 @@ impl InteractionWorld {
                 ("torque", body.user_torque().is_finite()),
             ];
             if let Some((field, _)) = fields.iter().find(|(_, ok)| !ok) {
-                return Some(format!("object {name}: {field}"));
+                return Some(format!("{name}: {field}"));
             }
         }
         for (i, c) in self.contacts.iter().enumerate() {

@@ -349,8 +349,7 @@ impl InteractionWorld {
         rotation: Quat,
     ) -> Result<(), WorldError> {
         let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
-        crate::scene::object::finite_vec(&slot.name, "position", position)?;
-        crate::scene::object::unit_quat(&slot.name, "rotation", rotation)?;
+        let rotation = firewall::placement(&slot.name, position, rotation)?;
         slot.reseat = true;
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
             body.set_position(Pose::from_parts(position, rotation), true);

@@ -7,6 +7,7 @@ use super::RunError;
 use super::drive::{self, Driver, HandSource, Observer};
 use super::observe::{ObjectSummary, Summary};
 use crate::hand::{HandSample, Side};
+use crate::input::TrackingFrame;
 use crate::input::convert::Conversion;
 use crate::input::live::LiveLeap;
 use crate::input::playback::interpolate;
@@ -34,7 +35,13 @@ pub struct LiveTracks {
     /// first to subtract), and hands that could not be posed or came twice
     /// for one side at one time, left out.
     pub dropped: usize,
+    /// A frame that jumped ahead, until the next one confirms it.
+    held: Option<TrackingFrame>,
 }
+
+/// How far ahead of the newest frame (s) a frame may jump before the next
+/// one must confirm it.
+const JUMP_AHEAD: f64 = 1.0;
 
 impl LiveTracks {
     /// Tracks from `stream`, converted by `conversion`; gaps up to `grace`
@@ -50,6 +57,7 @@ impl LiveTracks {
             closed: false,
             ids_seen: BTreeSet::new(),
             dropped: 0,
+            held: None,
         }
     }
 
@@ -59,10 +67,18 @@ impl LiveTracks {
     }
 
     /// Reads frames until one is at or after `t` (s), or the stream closes.
+    ///
+    /// A frame more than [`JUMP_AHEAD`] ahead of the newest is held back
+    /// until the next one: if that comes back below it, the jump was a
+    /// corrupt timestamp and is dropped. Taken at its word, it would make
+    /// every later frame look stale and stop the clock reading the stream.
     fn read_until(&mut self, t: f64) -> Result<(), RunError> {
         while !self.closed && self.newest < t {
             let Some(frame) = self.stream.next_frame()? else {
                 self.closed = true;
+                if let Some(held) = self.held.take() {
+                    self.accept(&held);
+                }
                 break;
             };
             let start = *self.start_us.get_or_insert(frame.timestamp_us);
@@ -72,30 +88,48 @@ impl LiveTracks {
                 continue;
             };
             let time = elapsed as f64 * 1e-6;
-            if time < self.newest {
-                self.dropped += 1;
-                continue;
-            }
-            self.newest = time;
-            for hand in &frame.hands {
-                self.ids_seen.insert(hand.id);
-                match hand_pose(hand, &self.conversion) {
-                    Ok(pose) if pose.validate(0).is_ok() => {
-                        let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
-                        let side = &mut self.samples[hand.side as usize];
-                        // A second hand of the same side in one frame (or at
-                        // one time) is a tracker's mistake: the first counts.
-                        if side.last().is_none_or(|(last, _)| *last < time) {
-                            side.push((time, sample));
-                        } else {
-                            self.dropped += 1;
-                        }
-                    }
-                    _ => self.dropped += 1,
+            if let Some(held) = self.held.take() {
+                if frame.timestamp_us < held.timestamp_us && time >= self.newest {
+                    self.dropped += 1; // the held jump was the glitch
+                } else {
+                    self.accept(&held);
                 }
             }
+            if time > self.newest.max(0.0) + JUMP_AHEAD {
+                self.held = Some(frame);
+                continue;
+            }
+            self.accept(&frame);
         }
         Ok(())
+    }
+
+    /// Takes a frame's hands, unless its time goes backwards.
+    fn accept(&mut self, frame: &TrackingFrame) {
+        let start = self.start_us.unwrap_or(frame.timestamp_us);
+        let time = frame.timestamp_us.saturating_sub(start) as f64 * 1e-6;
+        if time < self.newest {
+            self.dropped += 1;
+            return;
+        }
+        self.newest = time;
+        for hand in &frame.hands {
+            self.ids_seen.insert(hand.id);
+            match hand_pose(hand, &self.conversion) {
+                Ok(pose) if pose.validate(0).is_ok() => {
+                    let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
+                    let side = &mut self.samples[hand.side as usize];
+                    // A second hand of the same side in one frame (or at
+                    // one time) is a tracker's mistake: the first counts.
+                    if side.last().is_none_or(|(last, _)| *last < time) {
+                        side.push((time, sample));
+                    } else {
+                        self.dropped += 1;
+                    }
+                }
+                _ => self.dropped += 1,
+            }
+        }
     }
 
     /// The `side` hand at `t` (s), reading frames as needed.

@@ -159,6 +159,13 @@ fn playback_names_the_frame_whose_time_or_hand_is_wrong() {
     let e =
         left_out(&[frame(5000, &[]), frame(6000, &[]), frame(4000, std::slice::from_ref(&hand))]);
     names(e, &["frame 2: timestamp goes backwards (4000 after 6000)"]);
+    // So is one corrupt frame far ahead: the frames after it are kept.
+    let at = |t: i64| frame(t, std::slice::from_ref(&hand));
+    let frames = [at(0), at(10_000), at(3_000_000_000), at(20_000), at(30_000)];
+    let e = left_out(&frames);
+    names(e, &["frame 2: timestamp jumps ahead (3000000000 after 10000), and frame 3 comes back"]);
+    let kept = playback(&frames).unwrap();
+    assert_eq!((kept.duration, kept.skipped.len()), (0.03, 1), "{:?}", kept.skipped);
     let e = playback_error(&[frame(0, &[]), frame(3_600_000_001, &[])]);
     names(
         e,

@@ -241,3 +241,21 @@ fn a_small_cube_s_palm_patch_stays_on_the_face_it_rests_on() {
     let turned = state.rotation.angle_between(Quat::IDENTITY).to_degrees();
     assert!(drift < 0.001 && turned < 1.0, "the cube moved {drift} m, turned {turned}°");
 }
+
+#[test]
+fn a_ball_on_a_gently_tilted_palm_rolls_away() {
+    // A flat box would stay at 12° (μ_st 0.6); a 4 cm ball must roll: the
+    // palm holds only planar faces as a rigid support.
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    let palm = palm_at(12.0);
+    let centre = palm.to_world(Vec3::new(0.02, PALM_HALF.y + 0.02 - 0.001, 0.0));
+    let mut desc = ObjectDesc::cuboid("ball", Vec3::splat(0.04), 0.05, centre)
+        .with_material(Material::custom("rubber", 0.6, 0.5, 0.5));
+    desc.shape = coulomb_hands::ShapeDesc::Sphere { radius: 0.02 };
+    let id = world.add_object(&desc).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let start = palm.to_local(position(&world, id));
+    run(&mut world, hand, 0.6, |_| pose_with(palm), |_, _| {});
+    let rolled = start.x - palm.to_local(position(&world, id)).x;
+    assert!(rolled > 0.01, "the ball rolled only {:.1} mm down the palm", rolled * 1e3);
+}

@@ -164,3 +164,27 @@ fn a_live_stream_with_a_burst_stale_frames_and_duplicate_hands_stays_calm() {
     assert!(summary.contacts_begun > 0, "the hand never touched the cube: {summary:?}");
     assert!(top <= 2.0, "the cube reached {top:.2} m/s");
 }
+
+#[test]
+fn a_frame_that_jumps_far_ahead_is_dropped_and_the_stream_goes_on() {
+    // Frame 50 of the real pinch claims to be 2000 s later. Taken at its
+    // word, every later frame would be stale and the clock would stop
+    // reading the stream.
+    let mut frames = pinch_frames()[..200].to_vec();
+    let t = frames[50]["timestamp"].as_i64().unwrap();
+    frames[50]["timestamp"] = (t + 2_000_000_000).into();
+    let messages = frames.iter().map(|f| f.to_string()).collect();
+    let (url, server) = serve(messages);
+    let summary = within_a_minute(move || {
+        let (mut world, _) = world_with_objects(InteractionConfig::default(), &[]).unwrap();
+        let conversion = Conversion::leap_desktop(Vec3::ZERO);
+        run_live(&url, &mut world, conversion, DEFAULT_GRACE, 60.0, &mut []).unwrap()
+    });
+    server.join().unwrap();
+    let recorded = leap::load(&pinch_path()).unwrap();
+    let conversion = Conversion::leap_desktop(Vec3::ZERO);
+    let head = Playback::new("pinch", &recorded.frames[..200], &conversion, DEFAULT_GRACE);
+    let last = head.unwrap().duration;
+    assert_eq!((summary.frames, summary.dropped), (200, 1), "{summary:?}");
+    assert!((summary.simulated - last).abs() < 0.01, "{} s of {last} s", summary.simulated);
+}
