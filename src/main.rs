@@ -308,9 +308,13 @@ fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
         summary.frames, summary.hands, summary.duration, summary.steps
     );
     let n = summary.skipped.len();
-    let more = if n > 10 { " (the first 10; all in --json)" } else { "" };
-    (n > 0).then(|| println!("left out {n} tracking glitches{more}:"));
-    summary.skipped.iter().take(10).for_each(|line| println!("  {line}"));
+    if n > 0 {
+        let more = if n > 10 { " (the first 10; all in --json)" } else { "" };
+        println!("left out {n} tracking glitches{more}:");
+        for line in summary.skipped.iter().take(10) {
+            println!("  {line}");
+        }
+    }
     if let Some(s) = site {
         println!(
             "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",
@@ -339,16 +343,8 @@ fn soak_loop(
 ) -> Result<coulomb_hands::run::soak::SoakReport, RunError> {
     use coulomb_hands::run::soak::{SoakLength, SoakProgress, soak};
     use std::io::IsTerminal;
-    let bar = if std::io::stderr().is_terminal() {
-        let bar = indicatif::ProgressBar::new(duration.as_secs().max(1));
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:30} {elapsed}/{len}s {msg}")
-                .expect("valid template"),
-        );
-        bar
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
+    let show = std::io::stderr().is_terminal();
+    let bar = progress_bar(show, duration.as_secs().max(1), "{bar:30} {elapsed}/{len}s {msg}");
     let mut progress = |p: &SoakProgress| {
         bar.set_position(p.elapsed.as_secs());
         let rate = p.steps as f64 / p.elapsed.as_secs_f64().max(1e-9);
@@ -368,6 +364,15 @@ fn print_soak(r: &coulomb_hands::run::soak::SoakReport, json: bool) -> Result<()
         print!("{r}");
     }
     Ok(())
+}
+
+/// A progress bar of `len` steps drawn with `template`, or a hidden one.
+fn progress_bar(show: bool, len: u64, template: &str) -> indicatif::ProgressBar {
+    if !show {
+        return indicatif::ProgressBar::hidden();
+    }
+    let style = indicatif::ProgressStyle::with_template(template).expect("a valid template");
+    indicatif::ProgressBar::new(len).with_style(style)
 }
 
 /// A buffered output file; its errors name it.
@@ -463,16 +468,8 @@ fn scenario(
     // Every file is checked before anything runs.
     let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
     let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
-    let bar = if all && !json {
-        let bar = indicatif::ProgressBar::new(scenarios.len() as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg} ({elapsed})")
-                .expect("valid template"),
-        );
-        bar
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
+    let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
+    let bar = progress_bar(all && !json, scenarios.len() as u64, template);
     let mut reports = Vec::new();
     let started = Instant::now();
     for s in &scenarios {
