@@ -70,22 +70,27 @@ pub(crate) fn fit_to_face(
     samples: usize,
     radius: f32,
 ) -> (f32, bool) {
-    let least_cos = |r: f32| {
+    // The least cosine between n and a ring sample's normal, if the ring
+    // of radius r fits the face.
+    let fit = |r: f32| {
         let cos = |o: &Vec3| surface::face_cos(object.shape, &object.pose, c + *o, n, 0.6 * r);
         let ring = sample_offsets(n, samples, r);
-        ring.iter().skip(1).map(cos).try_fold(1.0f32, |least, c| Some(least.min(c?)))
+        let least = ring.iter().skip(1).map(cos).try_fold(1.0f32, |l, c| Some(l.min(c?)));
+        least.filter(|&l| l >= surface::SAME_FACE_COS)
     };
-    let fits = |r: f32| least_cos(r).is_some_and(|cos| cos >= surface::SAME_FACE_COS);
-    let mut fitting = radius;
-    if !fits(radius) {
+    let (mut fitting, mut least) = (radius, fit(radius));
+    if least.is_none() {
         let mut too_big = radius;
         fitting = 0.0;
         for _ in 0..FIT_STEPS {
             let mid = 0.5 * (fitting + too_big);
-            if fits(mid) { fitting = mid } else { too_big = mid }
+            match fit(mid) {
+                Some(l) => (fitting, least) = (mid, Some(l)),
+                None => too_big = mid,
+            }
         }
     }
-    let planar = fitting > 0.0 && least_cos(fitting).is_some_and(|cos| cos >= PLANAR_COS);
+    let planar = fitting > 0.0 && least.is_some_and(|l| l >= PLANAR_COS);
     (fitting, planar)
 }
 
@@ -139,7 +144,7 @@ pub(crate) struct Rocking {
 impl Rocking {
     /// The deviation springs of a soft pad: γ/N, damped as the contact.
     pub fn soft(object: &ObjectView) -> Rocking {
-        let lag = if object.gamma > 0.0 { object.damping / object.gamma } else { 0.0 };
+        let lag = damping_lag(object.damping, object.gamma);
         Rocking { stiffness: object.gamma, lag, clamped: true }
     }
 
@@ -186,6 +191,13 @@ pub fn push_only(forces: &mut [Vec3], n: Vec3) {
         let push = -f.dot(n);
         *f -= (push.max(0.0) * scale - push) * n;
     }
+}
+
+/// A damper `damping` (N·s/m) on a spring `gamma` (N/m) folded into the
+/// spring as extra stretch per unit rate, `c/γ` (s).
+#[inline]
+fn damping_lag(damping: f32, gamma: f32) -> f32 {
+    if gamma > 0.0 { damping / gamma } else { 0.0 }
 }
 
 /// A contact's patch as one step sees it (world).
@@ -236,7 +248,7 @@ pub(crate) fn spread(
     // Rotations as matrices: each is applied to every sample.
     let object_rot = Mat3::from_quat(pose.rotation);
     // Damping of the deviations, folded in as extra stretch c/γ · ė.
-    let lag = if step.gamma > 0.0 { step.damping / step.gamma } else { 0.0 };
+    let lag = damping_lag(step.damping, step.gamma);
     let rocking = step.rocking;
     let normal_limit = step.normal_force / rocking.stiffness;
     let rock = rocking.stiffness / step.gamma;
