@@ -35,8 +35,9 @@ pub struct LiveTracks {
     /// first to subtract), and hands that could not be posed or came twice
     /// for one side at one time, left out.
     pub dropped: usize,
-    /// A frame that jumped ahead, until the next one confirms it.
-    held: Option<TrackingFrame>,
+    /// A frame that jumped ahead, with its time (s), until the next one
+    /// confirms it.
+    held: Option<(TrackingFrame, f64)>,
 }
 
 /// How far ahead of the newest frame (s) a frame may jump before the next
@@ -76,8 +77,8 @@ impl LiveTracks {
         while !self.closed && self.newest < t {
             let Some(frame) = self.stream.next_frame()? else {
                 self.closed = true;
-                if let Some(held) = self.held.take() {
-                    self.accept(&held);
+                if let Some((held, time)) = self.held.take() {
+                    self.accept(&held, time);
                 }
                 break;
             };
@@ -88,26 +89,24 @@ impl LiveTracks {
                 continue;
             };
             let time = elapsed as f64 * 1e-6;
-            if let Some(held) = self.held.take() {
-                if frame.timestamp_us < held.timestamp_us && time >= self.newest {
+            if let Some((held, held_time)) = self.held.take() {
+                if time < held_time && time >= self.newest {
                     self.dropped += 1; // the held jump was the glitch
                 } else {
-                    self.accept(&held);
+                    self.accept(&held, held_time);
                 }
             }
             if time > self.newest.max(0.0) + JUMP_AHEAD {
-                self.held = Some(frame);
+                self.held = Some((frame, time));
                 continue;
             }
-            self.accept(&frame);
+            self.accept(&frame, time);
         }
         Ok(())
     }
 
-    /// Takes a frame's hands, unless its time goes backwards.
-    fn accept(&mut self, frame: &TrackingFrame) {
-        let start = self.start_us.unwrap_or(frame.timestamp_us);
-        let time = frame.timestamp_us.saturating_sub(start) as f64 * 1e-6;
+    /// Takes a frame's hands at `time` (s), unless it goes backwards.
+    fn accept(&mut self, frame: &TrackingFrame, time: f64) {
         if time < self.newest {
             self.dropped += 1;
             return;
