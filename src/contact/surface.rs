@@ -114,16 +114,10 @@ pub fn locate_contact(
 /// follow a gently curved surface but not wrap round an edge.
 pub(crate) const SAME_FACE_COS: f32 = 0.866;
 
-/// Whether the point `q` of C's tangent plane (normal `n`) lies over C's
-/// face: straight below it, within `depth` (m) of the plane, the object's
-/// surface turns by less than 30° from `n`. A point beyond an edge finds a
-/// side face, another part of the object, or nothing.
-pub fn over_face(shape: &dyn Shape, pose: &Pose, q: Vec3, n: Vec3, depth: f32) -> bool {
-    face_cos(shape, pose, q, n, depth).is_some_and(|cos| cos >= SAME_FACE_COS)
-}
-
 /// The cosine between `n` and the object's surface normal straight below
-/// `q` (within `depth` of C's tangent plane), if the surface is there.
+/// `q`, a point of C's tangent plane, if the surface is there within
+/// `depth` (m) of the plane. A point beyond an edge finds a side face
+/// (a small cosine), another part of the object, or nothing.
 pub fn face_cos(shape: &dyn Shape, pose: &Pose, q: Vec3, n: Vec3, depth: f32) -> Option<f32> {
     let lift = depth.max(1.0e-4);
     cast(shape, pose, q + lift * n, -n, 2.0 * lift, n).map(|hit| hit.normal.dot(n))
