@@ -42,19 +42,24 @@ pub fn bench(args: BenchArgs) -> Result<(), String> {
 
 fn print_report(r: &BenchReport, options: &BenchOptions) {
     println!(
-        "sweep: held boxes, each squeezed by 2 bones; {} samples per contact; µs per step, \
-         median of {}-step blocks over {} steps",
+        "sweep: {} samples per contact; µs per step, median of {}-step blocks of {} steps",
         bench::SAMPLES,
         bench::BLOCK,
         options.steps
     );
-    println!("bones  hands  interaction  rapier    full  µs/bone");
+    println!("bones  hands  interaction   rapier     full  interaction/bone  full/bone");
     for row in &r.sweep {
         let t = row.times;
-        let per_bone = t.full_us / row.bones as f64;
+        let bones = row.bones as f64;
         println!(
-            "{:5}  {:5}  {:11.2}  {:6.2}  {:6.2}  {per_bone:7.3}",
-            row.bones, row.hands, t.interaction_us, t.rapier_us, t.full_us
+            "{:5}  {:5}  {:11.2}  {:7.2}  {:7.2}  {:16.3}  {:9.3}",
+            row.bones,
+            row.hands,
+            t.interaction_us,
+            t.rapier_us,
+            t.full_us,
+            t.interaction_us / bones,
+            t.full_us / bones
         );
     }
     print_linearity(r);
