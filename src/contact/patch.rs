@@ -12,7 +12,7 @@ use super::anchor::Anchor;
 use super::surface;
 use super::{LawSettings, ObjectView};
 use crate::friction::{FrictionCoefficients, slipped_stretch, slips};
-use glam::{Mat3, Vec3};
+use glam::{Mat3, Mat3A, Vec3, Vec3A};
 
 /// Patch sizes per skin class (§3.5.4: thumb and palm patches are wider).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -245,8 +245,6 @@ pub(crate) fn spread(
 ) {
     let pose = &object.pose;
     let (c, n) = (step.center, step.normal);
-    // Rotations as matrices: each is applied to every sample.
-    let object_rot = Mat3::from_quat(pose.rotation);
     // Damping of the deviations, folded in as extra stretch c/γ · ė.
     let lag = damping_lag(step.damping, step.gamma);
     let rocking = step.rocking;
@@ -254,27 +252,39 @@ pub(crate) fn spread(
     let rock = rocking.stiffness / step.gamma;
     scratch.deviations.clear();
     points.clear();
+    // The loop runs on glam's SIMD `Vec3A`/`Mat3A`: lane for lane the same
+    // products and sums, in the same order, as `Vec3`/`Mat3` (rustc fuses
+    // no multiply-add), so the same bits. Rotations as matrices: each is
+    // applied to every sample.
+    let object_rot = Mat3A::from(Mat3::from_quat(pose.rotation));
+    let (skin_rot, skin_rate) = (Mat3A::from(step.skin), Mat3A::from(step.skin_rate));
+    let (origin, angvel) = (Vec3A::from(pose.translation), Vec3A::from(object.angvel));
+    let (c, n) = (Vec3A::from(c), Vec3A::from(n));
     for (ci_local, skin) in anchor.samples.iter_mut() {
-        let mut ci = pose.translation + object_rot * *ci_local;
-        let rest = c + step.skin * *skin;
+        let skin_offset = Vec3A::from(*skin);
+        let mut ci = origin + object_rot * Vec3A::from(*ci_local);
+        let rest = c + skin_rot * skin_offset;
         let e = ci - rest;
         let e_n =
             if rocking.clamped { e.dot(n).clamp(-normal_limit, normal_limit) } else { e.dot(n) };
         let mut e_t = e - e.dot(n) * n;
-        if slips(e_t, step.normal_force, step.mu, step.gamma) {
+        if slips(e_t.into(), step.normal_force, step.mu, step.gamma) {
             // This sample slips: its object point moves along the surface.
-            e_t = slipped_stretch(e_t, step.normal_force, step.mu, step.gamma);
-            ci = surface::project_to_surface(object.shape, pose, rest + e_t + e_n * n);
-            *ci_local = pose.inverse_transform_point(ci);
+            e_t = slipped_stretch(e_t.into(), step.normal_force, step.mu, step.gamma).into();
+            let moved =
+                surface::project_to_surface(object.shape, pose, (rest + e_t + e_n * n).into());
+            *ci_local = pose.inverse_transform_point(moved);
+            ci = moved.into();
         }
-        let e_rate = object.angvel.cross(ci - c) - step.skin_rate * *skin;
+        let e_rate = angvel.cross(ci - c) - skin_rate * skin_offset;
         let rate_n = e_rate.dot(n);
         let rate_t = e_rate - rate_n * n;
         // Scaled so that γ/N times it is the rocking spring k/N on e_n.
         let rocking_stretch = rock * (e_n + rocking.lag * rate_n);
-        scratch.deviations.push(e_t + lag * rate_t + rocking_stretch * n);
-        points.push(ci);
+        scratch.deviations.push((e_t + lag * rate_t + rocking_stretch * n).into());
+        points.push(ci.into());
     }
+    let n = Vec3::from(n);
     sample_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.sample_forces);
     push_only(&mut scratch.sample_forces, n);
     let forces = scratch.sample_forces.iter().copied();
