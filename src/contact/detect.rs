@@ -9,7 +9,7 @@
 //!
 //! A live contact asks only the last question, within the release offset.
 
-use super::{BoneMotion, ObjectView};
+use super::ObjectView;
 use crate::hand::{Bone, BoneShape};
 use glam::Vec3;
 use rapier3d::math::Pose;
@@ -38,9 +38,9 @@ pub(crate) struct Detector {
     pub contact_offset: f32,
     /// A contact ends beyond this distance (m).
     pub release_offset: f32,
-    /// Per bone of the hand being searched: its reach, the bone's box
-    /// grown by the contact offset.
-    reach: Vec<(Bone, BoneMotion, Aabb)>,
+    /// Per bone of the hand being searched: its shape now and its reach,
+    /// the bone's box grown by the contact offset.
+    reach: Vec<(Bone, BoneShape, Aabb)>,
     /// Indices of the objects whose boxes meet the whole hand's.
     near_hand: Vec<usize>,
 }
@@ -58,35 +58,35 @@ impl Detector {
     }
 
     /// One hand's new touches, through the filter chain. `bones` are the
-    /// hand's tracked bones; `boxes[o]` is object `o`'s bounding box and
+    /// hand's tracked bones, as they are now; `boxes[o]` is object `o`'s bounding box and
     /// `view(o)` the object itself. `known(bone, o)` leaves out pairs that
     /// are in contact already, before their exact query. `touch` is called
     /// for every bone whose surface is within the contact offset of an
     /// object, in bone order, then object order.
     pub fn new_touches<'v>(
         &mut self,
-        bones: impl Iterator<Item = (Bone, BoneMotion)>,
+        bones: impl Iterator<Item = (Bone, BoneShape)>,
         boxes: &[Aabb],
         view: impl Fn(usize) -> ObjectView<'v>,
         known: impl Fn(Bone, usize) -> bool,
-        mut touch: impl FnMut(Bone, BoneMotion, &ObjectView<'v>, Proximity),
+        mut touch: impl FnMut(Bone, &ObjectView<'v>, Proximity),
     ) {
         self.reach.clear();
         let grow = self.contact_offset;
-        self.reach.extend(bones.map(|(bone, m)| (bone, m, bone_aabb(&m.now).loosened(grow))));
+        self.reach.extend(bones.map(|(bone, now)| (bone, now, bone_aabb(&now).loosened(grow))));
         let Some(hand) = self.reach.iter().map(|r| r.2).reduce(|a, b| a.merged(&b)) else {
             return;
         };
         self.near_hand.clear();
         self.near_hand.extend((0..boxes.len()).filter(|&o| hand.intersects(&boxes[o])));
-        for (bone, motion, reach) in &self.reach {
+        for (bone, now, reach) in &self.reach {
             for &o in &self.near_hand {
                 if !reach.intersects(&boxes[o]) || known(*bone, o) {
                     continue;
                 }
                 let object = view(o);
-                if let Some(prox) = within(&motion.now, &object, self.contact_offset) {
-                    touch(*bone, *motion, &object, prox);
+                if let Some(prox) = within(now, &object, self.contact_offset) {
+                    touch(*bone, &object, prox);
                 }
             }
         }

@@ -43,13 +43,15 @@ impl InteractionWorld {
         step.limits.clear();
         let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };
         step.limits.resize(self.objects.len(), none);
-        for c in &step.candidates {
-            let o = c.contact.object.0 as usize;
+        // The kept contacts, then the new ones: the order they are updated in.
+        let found = step.found.iter().map(|c| &c.contact);
+        for c in self.contacts.iter().chain(found) {
+            let o = c.object.0 as usize;
             let slot = &self.objects[o];
             let body = &self.physics.bodies[slot.body];
             let inv_inertia =
                 body.mass_properties().local_mprops.inv_principal_inertia.max_element();
-            let r = c.contact.point - body.center_of_mass();
+            let r = c.point - body.center_of_mass();
             let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
             step.limits[o].stiffness += slot.gamma * w;
             step.limits[o].damping += self.nominal_damping(slot) * w;

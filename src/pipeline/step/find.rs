@@ -19,28 +19,24 @@ impl InteractionWorld {
         let colliders = &world.physics.colliders;
         step.boxes.extend(world.objects.iter().map(|o| colliders[o.collider].compute_aabb()));
         let settings = step.settings;
-        let kept = &step.candidates;
+        let kept = &world.contacts;
         step.found.clear();
         for h in 0..world.hands.len() {
             let hand = HandId(h as u32);
-            let bones = Bone::all().filter_map(|bone| Some((bone, world.motion(hand, bone)?)));
+            // A bone's motion is looked up only for a touch.
+            let Some(pose) = world.hands[h].pose.as_ref() else { continue };
+            let bones = Bone::all().map(|bone| (bone, pose.bone(bone)));
             let known = |bone: Bone, o: usize| {
                 let key = (ObjectId(o as u32), hand, bone.index());
-                kept.binary_search_by_key(&key, |c| contact_key(&c.contact)).is_ok()
+                kept.binary_search_by_key(&key, contact_key).is_ok()
             };
             let view = |o| world.object_view(o, StabilityScale::NONE);
-            step.detector.new_touches(
-                bones,
-                &step.boxes,
-                view,
-                known,
-                |bone, motion, object, prox| {
-                    let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
-                    let proximity = Some(prox);
-                    step.found.push(Candidate { contact, proximity, motion, is_new: true });
-                },
-            );
+            step.detector.new_touches(bones, &step.boxes, view, known, |bone, object, prox| {
+                let Some(motion) = world.motion(hand, bone) else { return };
+                let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
+                let proximity = Some(prox);
+                step.found.push(Candidate { contact, proximity, motion });
+            });
         }
-        step.candidates.append(&mut step.found);
     }
 }

@@ -1,6 +1,6 @@
 //! Stage 2: existing contacts are kept, or end.
 
-use super::{Candidate, StepScratch};
+use super::StepScratch;
 use crate::contact::ContactEventKind;
 use crate::friction::FrictionState;
 use crate::pipeline::InteractionWorld;
@@ -13,26 +13,30 @@ impl InteractionWorld {
     /// the bone is within the release offset. A contact ends when its hand
     /// lost tracking or its object's contacts are re-seated.
     pub(super) fn keep_contacts(&mut self, step: &mut StepScratch) {
-        step.candidates.clear();
-        for contact in std::mem::take(&mut self.contacts) {
+        step.kept.clear();
+        // In place: a kept contact is not moved.
+        let mut contacts = std::mem::take(&mut self.contacts);
+        contacts.retain(|contact| {
             let reseat = self.objects[contact.object.0 as usize].reseat;
             let motion = self.motion(contact.hand, contact.bone).filter(|_| !reseat);
             let Some(motion) = motion else {
-                self.push_event(ContactEventKind::Ended, &contact);
-                continue;
+                self.push_event(ContactEventKind::Ended, contact);
+                return false;
             };
             let proximity = if contact.state == FrictionState::Static {
                 None
             } else {
                 let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
                 let Some(prox) = step.detector.still_touching(&motion.now, &object) else {
-                    self.push_event(ContactEventKind::Ended, &contact);
-                    continue;
+                    self.push_event(ContactEventKind::Ended, contact);
+                    return false;
                 };
                 Some(prox)
             };
-            step.candidates.push(Candidate { contact, proximity, motion, is_new: false });
-        }
+            step.kept.push(proximity);
+            true
+        });
+        self.contacts = contacts;
         for slot in self.objects.iter_mut() {
             slot.reseat = false;
         }

@@ -59,16 +59,36 @@ impl InteractionWorld {
         self.find_new_contacts(&mut step);
         self.stability_limits(&mut step);
         // Stages 5 and 6 go contact by contact, so each patch's forces reach
-        // rapier while they are still in cache.
-        let mut candidates = std::mem::take(&mut step.candidates);
-        let mut contacts = Vec::with_capacity(candidates.len());
-        for Candidate { mut contact, proximity, motion, is_new } in candidates.drain(..) {
-            if self.update_contact(&mut contact, proximity, &motion, is_new, &mut step) {
+        // rapier while they are still in cache: the kept contacts in place,
+        // in their order, then the new ones.
+        let mut contacts = std::mem::take(&mut self.contacts);
+        let kept = std::mem::take(&mut step.kept);
+        let mut live = 0;
+        for (i, &proximity) in kept.iter().enumerate() {
+            let contact = &mut contacts[i];
+            // The poses have not changed since `keep_contacts` found it.
+            let alive = match self.motion(contact.hand, contact.bone) {
+                Some(motion) => self.update_contact(contact, proximity, &motion, false, &mut step),
+                None => {
+                    self.push_event(ContactEventKind::Ended, contact);
+                    false
+                }
+            };
+            if alive {
+                self.apply_forces(contact.object, &step.patch.applied);
+                contacts.swap(live, i);
+                live += 1;
+            }
+        }
+        contacts.truncate(live);
+        let mut found = std::mem::take(&mut step.found);
+        for Candidate { mut contact, proximity, motion } in found.drain(..) {
+            if self.update_contact(&mut contact, proximity, &motion, true, &mut step) {
                 self.apply_forces(contact.object, &step.patch.applied);
                 contacts.push(contact);
             }
         }
-        step.candidates = candidates;
+        (step.kept, step.found) = (kept, found);
         contacts.sort_by_key(contact_key);
         self.contacts = contacts;
         self.scratch = step;
@@ -128,15 +148,13 @@ impl InteractionWorld {
     }
 }
 
-/// A contact on its way through one step.
+/// A contact found this step, on its way to begin.
 #[derive(Debug)]
 pub(super) struct Candidate {
     pub contact: Contact,
     /// The closest features, if a stage has queried them this step.
     pub proximity: Option<Proximity>,
     pub motion: BoneMotion,
-    /// Found this step: it has not begun yet.
-    pub is_new: bool,
 }
 
 /// The order of [`InteractionWorld::contacts`]: by object, then hand, then
@@ -148,7 +166,10 @@ fn contact_key(c: &Contact) -> (ObjectId, HandId, usize) {
 /// Buffers kept from step to step, so a warm step allocates little.
 #[derive(Debug, Default)]
 pub(crate) struct StepScratch {
-    pub(super) candidates: Vec<Candidate>,
+    /// Per kept contact (in [`InteractionWorld::contacts`]' order): its
+    /// closest features, if `keep_contacts` queried them.
+    pub(super) kept: Vec<Option<Proximity>>,
+    /// The contacts found this step.
     pub(super) found: Vec<Candidate>,
     pub(super) detector: Detector,
     /// Each object's bounding box this step.
