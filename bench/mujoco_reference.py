@@ -15,8 +15,9 @@ The bench's coordinates are y-up; MuJoCo's are z-up: (x, y, z) becomes
 (x, -z, y), a rotation, so the scene is the same.
 
 Prints one JSON object: {"step_us", "settings", "steps", "mujoco",
-"boxes_held", "boxes"}. `--compare` times every cone x integrator pair
-instead and prints a table. Run by `coulomb-hands bench --mujoco`; made
+"boxes_held", "boxes"}. `--cone` and `--integrator` choose other settings
+than the default, the fastest here (pyramidal cones, Euler); `--compare`
+times every cone x integrator pair instead and prints a table. Run by `coulomb-hands bench --mujoco`; made
 ready by `bench/mujoco.sh`. Exits 3, with a message on stderr, when the
 mujoco module is missing.
 """
@@ -145,9 +146,11 @@ def main():
     parser.add_argument("--check", action="store_true", help="print the version and exit")
     parser.add_argument("--compare", action="store_true", help="time every cone x integrator")
     parser.add_argument("--xml", action="store_true", help="print the MJCF and exit")
+    parser.add_argument("--cone", default="pyramidal", choices=("pyramidal", "elliptic"))
+    parser.add_argument("--integrator", default="Euler", choices=("Euler", "implicitfast"))
     args = parser.parse_args()
     if args.xml:
-        print(mjcf(args.boxes, not args.no_tower, "pyramidal", "Euler"))
+        print(mjcf(args.boxes, not args.no_tower, args.cone, args.integrator))
         return
     try:
         import mujoco
@@ -161,7 +164,7 @@ def main():
     if args.check:
         print(json.dumps({"mujoco": mujoco.__version__}))
         return
-    pairs = [("pyramidal", "Euler")]
+    pairs = [(args.cone, args.integrator)]
     if args.compare:
         pairs = [(c, i) for c in ("pyramidal", "elliptic") for i in ("Euler", "implicitfast")]
     results = []
@@ -174,12 +177,15 @@ def main():
         for cone, integrator, step_us, kept in results:
             print(f"{cone:9} {integrator:12} {step_us:8.1f} µs/step, {kept}/{args.boxes} boxes held")
         return
-    _, _, step_us, kept = results[0]
+    cone, integrator, step_us, kept = results[0]
+    settings = SETTINGS
+    if (cone, integrator) != ("pyramidal", "Euler"):
+        settings = f"{cone} cone, {integrator} integrator, dt 1 ms"
     print(
         json.dumps(
             {
                 "step_us": step_us,
-                "settings": SETTINGS,
+                "settings": settings,
                 "steps": args.steps,
                 "mujoco": mujoco.__version__,
                 "boxes_held": kept,
