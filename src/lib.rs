@@ -34,8 +34,10 @@
 #![warn(missing_docs)]
 
 pub mod contact;
+pub mod eval;
 pub mod file_error;
 pub mod friction;
+pub mod grab;
 pub mod hand;
 pub mod input;
 pub mod output;
@@ -50,7 +52,8 @@ pub use hand::{
     Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side,
 };
 pub use pipeline::{
-    ConfigError, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError,
+    ConfigError, InteractionConfig, InteractionWorld, Method, ObjectFriction, ObjectState,
+    WorldError,
 };
 pub use run::RunError;
 pub use scene::{

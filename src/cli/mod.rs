@@ -3,6 +3,7 @@
 pub mod args;
 pub mod bench;
 pub mod demo;
+pub mod eval;
 pub mod live;
 pub mod replay;
 pub mod scenario;

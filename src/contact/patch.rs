@@ -217,6 +217,8 @@ pub(crate) struct PatchStep {
     pub damping: f32,
     pub mu: FrictionCoefficients,
     pub rocking: Rocking,
+    /// Whether the samples' deviation springs act (off: `f/N` each).
+    pub deviation_springs: bool,
 }
 
 /// Buffers reused from step to step.
@@ -256,6 +258,12 @@ pub(crate) fn spread(
     points.clear();
     for (ci_local, skin) in anchor.samples.iter_mut() {
         let mut ci = pose.translation + object_rot * *ci_local;
+        if !step.deviation_springs {
+            // The thesis's patch: each sample carries f/N where it lies.
+            scratch.deviations.push(Vec3::ZERO);
+            points.push(ci);
+            continue;
+        }
         let rest = c + step.skin * *skin;
         let e = ci - rest;
         let e_n =

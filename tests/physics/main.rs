@@ -1,8 +1,10 @@
 //! Physical-outcome tests of the core: every test asserts what happens to
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
+mod baselines;
 mod controls;
 mod energy;
+mod evaluation;
 mod flat;
 mod glitch;
 mod grasp;
