@@ -113,17 +113,28 @@ enum Command {
         #[arg(long, default_value = "assets/meshes")]
         out: std::path::PathBuf,
     },
-    /// Time steps of the benchmark scene (2 hands, 16 held boxes, 54-block tower).
+    /// Time steps against bones in contact (6..128) and the reference scene awake and
+    /// asleep (thesis §5.3, Fig. 5.6); with --mujoco, MuJoCo's step beside them.
     Bench {
-        /// Steps to time after warm-up.
-        #[arg(long, default_value_t = 2000)]
-        steps: usize,
-        /// Held boxes (2 bones in contact each), 1..=16.
+        /// Timed steps per figure, after a warm-up.
+        #[arg(long, default_value_t = 5000, value_parser = clap::value_parser!(u32).range(1..))]
+        steps: u32,
+        /// Held boxes in the reference scene (2 bones in contact each), 1..=16.
         #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u16).range(1..=16))]
         boxes: u16,
-        /// Leave the tower out.
+        /// Leave the reference scene's tower out.
         #[arg(long)]
         no_tower: bool,
+        /// Print one JSON object instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also time MuJoCo's mj_step on the reference scene (bench/mujoco_reference.py).
+        #[arg(long)]
+        mujoco: bool,
+        /// The Python with pip's mujoco [default: target/mujoco-venv/bin/python if there,
+        /// else python3].
+        #[arg(long, requires = "mujoco")]
+        python: Option<std::path::PathBuf>,
     },
 }
 
@@ -160,8 +171,9 @@ fn main() -> ExitCode {
         Command::Demo { json, thesis_kinetic, every } => {
             cli::demo::demo(json, thesis_kinetic, every as f32)
         }
-        Command::Bench { steps, boxes, no_tower } => {
-            cli::bench::bench(steps, boxes.into(), !no_tower)
+        Command::Bench { steps, boxes, no_tower, json, mujoco, python } => {
+            let (steps, boxes, tower) = (steps as usize, boxes.into(), !no_tower);
+            cli::bench::bench(cli::bench::BenchArgs { steps, boxes, tower, json, mujoco, python })
         }
         Command::Eval { study: Study::Accuracy { users, trials, seed, method, json } } => {
             let options = coulomb_hands::eval::AccuracyOptions {

@@ -10,7 +10,7 @@
 //! * [`live`]: a live Leap Motion stream;
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
-//! * [`mod@bench`]: the benchmark scene and its timing.
+//! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side.
 
 pub mod bench;
 pub mod demo;

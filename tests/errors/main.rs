@@ -2,6 +2,7 @@
 //! with its message checked to name what is wrong: the file, the field or
 //! JSON path, the frame, the bad value. One module per area.
 
+mod bench;
 mod cli;
 mod input;
 mod live;

@@ -2,6 +2,7 @@
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
 mod baselines;
+mod bench;
 mod controls;
 mod energy;
 mod evaluation;

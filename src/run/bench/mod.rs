@@ -1,0 +1,401 @@
+//! The `bench` command's measurements, thesis §5.3 and Fig. 5.6: step time
+//! against bones in contact, the reference scene awake and asleep, and
+//! MuJoCo's step on the same scene.
+//!
+//! * the **sweep**: [`sweep_scene`] with 6, 16, 32, 64 and 128 bones
+//!   pressing ([`SWEEP_BONES`]), [`SAMPLES`] samples per contact, each step
+//!   split into the interaction layer
+//!   ([`InteractionWorld::apply_hand_forces`]) and rapier's step
+//!   ([`InteractionWorld::step_physics`]);
+//! * the **reference scene** ([`held_boxes_scene`]: ground, 54-block tower,
+//!   16 held boxes, 32 bones pressing) with rapier's sleeping as it is (the
+//!   tower falls asleep in its first second, which is timed apart as the
+//!   settling figure) and with sleeping off ([`keep_awake`]: the tower
+//!   stays awake, as it does while a hand works on it);
+//! * [`mujoco`]: `bench/mujoco_reference.py` times MuJoCo's `mj_step` on
+//!   the same reference scene, in a Python subprocess.
+//!
+//! Every figure is the median, over blocks of [`BLOCK`] steps, of a
+//! block's mean µs per step: a block that another process interrupted
+//! moves it little.
+
+pub mod mujoco;
+mod scene;
+
+pub use scene::{BOXES_PER_HAND, MAX_HANDS, held_boxes_scene, sweep_scene};
+
+use super::RunError;
+use super::drive::{Driver, Observer, StepView};
+use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
+use rapier3d::prelude::RigidBodyActivation;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Bones in contact in the sweep (thesis Fig. 5.6), up to 8 hands.
+pub const SWEEP_BONES: [usize; 5] = [6, 16, 32, 64, 128];
+/// Skin-patch samples per contact in every bench scene.
+pub const SAMPLES: usize = 8;
+/// Steps every timed world runs first, untimed, so that its contacts have
+/// begun and pressed in.
+pub const WARM_UP: usize = 200;
+/// Steps per timed block.
+pub const BLOCK: usize = 100;
+
+/// The bench's settings: the defaults, with [`SAMPLES`] samples per contact.
+pub fn bench_config() -> InteractionConfig {
+    let mut config = InteractionConfig::default();
+    config.patch.samples = SAMPLES;
+    config
+}
+
+/// What a bench run does.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchOptions {
+    /// Timed steps per figure, after the warm-up.
+    pub steps: usize,
+    /// Held boxes in the reference scene (1..=16, two bones each).
+    pub boxes: usize,
+    /// Whether the reference scene has its tower.
+    pub tower: bool,
+    /// The Python to run MuJoCo's side with, if it is wanted.
+    pub mujoco: Option<PathBuf>,
+}
+
+impl BenchOptions {
+    /// The steps a run takes, for a progress bar: the sweep's worlds and
+    /// the reference scene's two (MuJoCo's steps not counted).
+    pub fn total_steps(&self) -> u64 {
+        let sweep = SWEEP_BONES.len() * (WARM_UP + self.steps);
+        let reference = ONE_SECOND + self.steps + WARM_UP + self.steps;
+        (sweep + reference) as u64
+    }
+}
+
+/// The steps of one simulated second at the default 1 ms step.
+const ONE_SECOND: usize = 1000;
+
+/// µs per step, the interaction layer timed apart from rapier's step.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct StepTimes {
+    /// Contacts and forces ([`InteractionWorld::apply_hand_forces`]).
+    pub interaction_us: f64,
+    /// rapier's step ([`InteractionWorld::step_physics`]).
+    pub rapier_us: f64,
+    /// The whole step: both (the median block's sum).
+    pub full_us: f64,
+}
+
+/// One point of the sweep.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SweepRow {
+    /// Bones pressing on a box (checked after the warm-up).
+    pub bones: usize,
+    /// Hands they belong to.
+    pub hands: usize,
+    /// Skin-patch samples per contact.
+    pub samples_per_contact: usize,
+    /// The step times.
+    #[serde(flatten)]
+    pub times: StepTimes,
+}
+
+/// The reference scene's figures.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Reference {
+    /// Bones pressing on a box at the end of the asleep run.
+    pub bones_pressing: usize,
+    /// Objects in the world (tower blocks and boxes).
+    pub objects: usize,
+    /// With rapier's sleeping: the tower asleep, the held boxes awake.
+    pub asleep: StepTimes,
+    /// With sleeping off: every object awake.
+    pub awake: StepTimes,
+    /// The mean full step over the first simulated second (sleeping on),
+    /// while the tower settles and falls asleep.
+    pub settling_us: f64,
+}
+
+/// MuJoCo's step on the reference scene, beside ours.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct MujocoFigures {
+    /// µs per `mj_step`.
+    pub step_us: f64,
+    /// MuJoCo's settings ([`mujoco::SETTINGS`]).
+    pub settings: String,
+    /// Our awake full step over MuJoCo's step.
+    pub ratio_awake: f64,
+    /// Our asleep full step over MuJoCo's step.
+    pub ratio_asleep: f64,
+}
+
+/// Everything `bench` measured in one run.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct BenchReport {
+    /// The sweep, by [`SWEEP_BONES`].
+    pub sweep: Vec<SweepRow>,
+    /// The reference scene.
+    pub reference: Reference,
+    /// MuJoCo's figures, if asked for.
+    pub mujoco: Option<MujocoFigures>,
+}
+
+/// Why a bench run failed.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    /// A scene was rejected (never for the shipped scenes).
+    #[error(transparent)]
+    World(#[from] WorldError),
+    /// A sweep scene did not press with the bones it is named after, so its
+    /// figure would not measure what it says.
+    #[error("the {bones}-bone sweep scene has {pressing} bones pressing after its warm-up")]
+    NotPressing {
+        /// Bones that should press.
+        bones: usize,
+        /// Bones that did.
+        pressing: usize,
+    },
+    /// The driver loop failed (it does not, with no hand sources).
+    #[error(transparent)]
+    Run(#[from] RunError),
+    /// MuJoCo's side could not run.
+    #[error(transparent)]
+    Mujoco(#[from] mujoco::MujocoError),
+}
+
+/// Runs the whole bench: the sweep, the reference scene asleep and awake,
+/// then MuJoCo's side if asked for (checked before anything is timed, so a
+/// missing MuJoCo fails at once). `progress` is told of every block of
+/// steps done ([`BenchOptions::total_steps`] in all).
+pub fn run(
+    options: &BenchOptions,
+    progress: &mut dyn FnMut(u64),
+) -> Result<BenchReport, BenchError> {
+    if let Some(python) = &options.mujoco {
+        mujoco::check(python)?;
+    }
+    let mut sweep = Vec::with_capacity(SWEEP_BONES.len());
+    for bones in SWEEP_BONES {
+        let (mut world, hands) = sweep_scene(bench_config(), bones / 2)?;
+        steps(&mut world, WARM_UP, progress)?;
+        let pressing = bones_pressing(&world);
+        if pressing != bones {
+            return Err(BenchError::NotPressing { bones, pressing });
+        }
+        let times = time_split(&mut world, options.steps, progress)?;
+        sweep.push(SweepRow { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
+    }
+    let reference = reference(options, progress)?;
+    let mujoco = match &options.mujoco {
+        Some(python) => {
+            let run = mujoco::run(python, options.steps, options.boxes, options.tower)?;
+            Some(MujocoFigures {
+                step_us: run.step_us,
+                settings: run.settings,
+                ratio_awake: reference.awake.full_us / run.step_us,
+                ratio_asleep: reference.asleep.full_us / run.step_us,
+            })
+        }
+        None => None,
+    };
+    Ok(BenchReport { sweep, reference, mujoco })
+}
+
+/// The reference scene asleep (after its timed first second) and awake.
+fn reference(
+    options: &BenchOptions,
+    progress: &mut dyn FnMut(u64),
+) -> Result<Reference, BenchError> {
+    let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
+    let start = Instant::now();
+    steps(&mut world, ONE_SECOND, progress)?;
+    let settling_us = start.elapsed().as_secs_f64() * 1e6 / ONE_SECOND as f64;
+    let asleep = time_split(&mut world, options.steps, progress)?;
+    let (bones_pressing, objects) = (bones_pressing(&world), world.object_count());
+    drop(world);
+    let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
+    keep_awake(&mut world);
+    steps(&mut world, WARM_UP, progress)?;
+    let awake = time_split(&mut world, options.steps, progress)?;
+    Ok(Reference { bones_pressing, objects, asleep, awake, settling_us })
+}
+
+/// Steps `world` `n` times through the driver loop, untimed.
+fn steps(
+    world: &mut InteractionWorld,
+    n: usize,
+    progress: &mut dyn FnMut(u64),
+) -> Result<(), BenchError> {
+    Driver::new(world).run(n, &mut [])?;
+    progress(n as u64);
+    Ok(())
+}
+
+/// Bones pressing on an object (a contact with a normal force).
+pub fn bones_pressing(world: &InteractionWorld) -> usize {
+    world.contacts().iter().filter(|c| c.normal_force > 0.0).count()
+}
+
+/// Turns rapier's sleeping off for every dynamic body of `world`, and
+/// wakes them: they stay awake however still they are.
+pub fn keep_awake(world: &mut InteractionWorld) {
+    for (_, body) in world.physics_mut().bodies.iter_mut() {
+        if body.is_dynamic() {
+            *body.activation_mut() = RigidBodyActivation::cannot_sleep();
+        }
+    }
+}
+
+/// Times `steps` steps of `world` through the driver loop, the
+/// interaction layer apart from rapier's step: per quantity, the median
+/// over blocks of [`BLOCK`] steps of the block's mean.
+pub fn time_split(
+    world: &mut InteractionWorld,
+    steps: usize,
+    progress: &mut dyn FnMut(u64),
+) -> Result<StepTimes, BenchError> {
+    let steps = steps.max(1);
+    let mut blocks = Vec::with_capacity(steps.div_ceil(BLOCK));
+    let mut driver = Driver::new(world);
+    let mut done = 0;
+    while done < steps {
+        let n = BLOCK.min(steps - done);
+        let mut watch = Stopwatch::default();
+        driver.run(n, &mut [&mut watch])?;
+        let per_step = |ns: u128| ns as f64 / n as f64 / 1e3;
+        let (hands, rapier) = (watch.hands_ns, watch.rapier_ns);
+        blocks.push([per_step(hands), per_step(rapier), per_step(hands + rapier)]);
+        done += n;
+        progress(n as u64);
+    }
+    let median = |i: usize| median(blocks.iter().map(|b| b[i]).collect());
+    Ok(StepTimes { interaction_us: median(0), rapier_us: median(1), full_us: median(2) })
+}
+
+/// Times each step's halves: the hand forces, from before the step to
+/// between its halves, and rapier's step, from there to after it.
+#[derive(Default)]
+struct Stopwatch {
+    start: Option<Instant>,
+    between: Option<Instant>,
+    hands_ns: u128,
+    rapier_ns: u128,
+}
+
+impl Observer for Stopwatch {
+    fn before_step(&mut self, _: &mut InteractionWorld, _: f64) -> Result<(), RunError> {
+        self.start = Some(Instant::now());
+        Ok(())
+    }
+
+    fn after_hand_forces(&mut self, _: &mut InteractionWorld) -> Result<(), RunError> {
+        self.between = Some(Instant::now());
+        Ok(())
+    }
+
+    fn after_step(&mut self, _: &StepView) -> Result<(), RunError> {
+        let end = Instant::now();
+        if let (Some(start), Some(between)) = (self.start, self.between) {
+            self.hands_ns += (between - start).as_nanos();
+            self.rapier_ns += (end - between).as_nanos();
+        }
+        Ok(())
+    }
+}
+
+/// The median of `values` (the mean of the middle two for an even count);
+/// 0 for none.
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    match n {
+        0 => 0.0,
+        _ if n % 2 == 1 => values[n / 2],
+        _ => 0.5 * (values[n / 2 - 1] + values[n / 2]),
+    }
+}
+
+/// A least-squares line `y = slope·x + intercept` and its R².
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearFit {
+    /// dy/dx.
+    pub slope: f64,
+    /// y at x = 0.
+    pub intercept: f64,
+    /// The share of y's variance the line explains (1 for a perfect fit).
+    pub r_squared: f64,
+}
+
+/// The least-squares line through `points`, if they have two distinct x
+/// and every coordinate is finite.
+pub fn linear_fit(points: &[(f64, f64)]) -> Option<LinearFit> {
+    let finite = points.iter().all(|(x, y)| x.is_finite() && y.is_finite());
+    if points.len() < 2 || !finite {
+        return None;
+    }
+    let n = points.len() as f64;
+    let mean_x = points.iter().map(|p| p.0).sum::<f64>() / n;
+    let mean_y = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxx: f64 = points.iter().map(|p| (p.0 - mean_x).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mean_x) * (p.1 - mean_y)).sum();
+    let syy: f64 = points.iter().map(|p| (p.1 - mean_y).powi(2)).sum();
+    if sxx <= 0.0 {
+        return None;
+    }
+    let slope = sxy / sxx;
+    let intercept = mean_y - slope * mean_x;
+    let residual: f64 = points.iter().map(|p| (p.1 - slope * p.0 - intercept).powi(2)).sum();
+    let r_squared = if syy > 0.0 { 1.0 - residual / syy } else { 1.0 };
+    Some(LinearFit { slope, intercept, r_squared })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_fits_exactly_and_noise_lowers_r_squared() {
+        let line: Vec<_> = [6.0, 16.0, 32.0, 64.0, 128.0].map(|x| (x, 0.5 * x + 2.0)).into();
+        let fit = linear_fit(&line).unwrap();
+        assert!((fit.slope - 0.5).abs() < 1e-12 && (fit.intercept - 2.0).abs() < 1e-12);
+        assert!((fit.r_squared - 1.0).abs() < 1e-12);
+        let noisy = [(0.0, 0.0), (1.0, 2.0), (2.0, 1.0), (3.0, 3.0)];
+        let fit = linear_fit(&noisy).unwrap();
+        assert!(fit.r_squared > 0.0 && fit.r_squared < 1.0);
+        assert_eq!(linear_fit(&[(1.0, 1.0)]), None);
+        assert_eq!(linear_fit(&[(1.0, 1.0), (1.0, 2.0)]), None);
+        assert_eq!(linear_fit(&[(1.0, f64::NAN), (2.0, 2.0)]), None);
+    }
+
+    #[test]
+    fn the_median_is_the_middle() {
+        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(vec![4.0, 1.0, 2.0, 3.0]), 2.5);
+        assert_eq!(median(Vec::new()), 0.0);
+    }
+
+    #[test]
+    fn the_json_has_the_reports_shape() {
+        let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
+        let row = SweepRow { bones: 6, hands: 1, samples_per_contact: 8, times };
+        let reference = Reference {
+            bones_pressing: 32,
+            objects: 70,
+            asleep: times,
+            awake: times,
+            settling_us: 4.0,
+        };
+        let report = BenchReport { sweep: vec![row], reference, mujoco: None };
+        let json = serde_json::to_value(&report).unwrap();
+        let expected = serde_json::json!({
+            "sweep": [{"bones": 6, "hands": 1, "samples_per_contact": 8,
+                       "interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0}],
+            "reference": {"bones_pressing": 32, "objects": 70,
+                          "asleep": {"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0},
+                          "awake": {"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0},
+                          "settling_us": 4.0},
+            "mujoco": null
+        });
+        assert_eq!(json, expected);
+        assert_eq!(serde_json::from_value::<BenchReport>(json).unwrap(), report);
+    }
+}

@@ -1,0 +1,75 @@
+//! `bench`: bad arguments and a missing MuJoCo are clear errors, and a
+//! quick run's `--json` has the shape the HTML report reads.
+
+use crate::{Scratch, cli_error, names, run, usage_error};
+use coulomb_hands::run::bench::{BenchReport, SAMPLES, SWEEP_BONES};
+use serde_json::Value;
+
+#[test]
+fn bad_bench_arguments_name_the_argument() {
+    names(usage_error(&["bench", "--steps", "0"]), &["'0'", "--steps"]);
+    names(usage_error(&["bench", "--boxes", "17"]), &["'17'", "--boxes", "1..=16"]);
+    names(usage_error(&["bench", "--python", "python3"]), &["--python", "--mujoco"]);
+}
+
+#[test]
+fn a_missing_python_or_mujoco_says_what_to_install() {
+    let e = cli_error(&["bench", "--mujoco", "--python", "/no/such/python", "--steps", "1"]);
+    names(e, &["cannot run /no/such/python", "bench/mujoco.sh", "pip install mujoco"]);
+}
+
+#[cfg(unix)]
+#[test]
+fn a_python_without_mujoco_says_what_to_install() {
+    use std::os::unix::fs::PermissionsExt;
+    let python3 = std::process::Command::new("python3").arg("--version").output();
+    if !python3.is_ok_and(|o| o.status.success()) {
+        return; // no python3 to stand in for one without mujoco
+    }
+    // A Python without site-packages has no mujoco, wherever pip put it.
+    let dir = Scratch::new("bench-python");
+    let fake = dir.file("python", "#!/bin/sh\nexec python3 -S \"$@\"\n");
+    std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+    let e = cli_error(&["bench", "--mujoco", "--python", &dir.text("python"), "--steps", "1"]);
+    names(e, &[&format!("{} cannot import mujoco", dir.text("python")), "bench/mujoco.sh"]);
+}
+
+#[test]
+fn bench_json_has_the_reports_shape() {
+    let (code, stdout, stderr) = run(&["bench", "--steps", "20", "--json"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let json: Value = serde_json::from_str(&stdout).expect("one JSON object");
+    let keys = |v: &Value| -> Vec<String> {
+        let mut keys: Vec<_> = v.as_object().expect("an object").keys().cloned().collect();
+        keys.sort();
+        keys
+    };
+    assert_eq!(keys(&json), ["mujoco", "reference", "sweep"]);
+    assert_eq!(json["mujoco"], Value::Null);
+    let times = ["full_us", "interaction_us", "rapier_us"];
+    let positive = |v: &Value| v.as_f64().is_some_and(|x| x.is_finite() && x > 0.0);
+    let sweep = json["sweep"].as_array().expect("an array");
+    assert_eq!(sweep.len(), SWEEP_BONES.len());
+    for (row, bones) in sweep.iter().zip(SWEEP_BONES) {
+        let mut expected = vec!["bones", "hands", "samples_per_contact"];
+        expected.extend(times);
+        expected.sort();
+        assert_eq!(keys(row), expected);
+        assert_eq!(row["bones"], bones);
+        assert_eq!(row["hands"], bones.div_ceil(16));
+        assert_eq!(row["samples_per_contact"], SAMPLES);
+        assert!(times.iter().all(|t| positive(&row[t])), "{row}");
+    }
+    let reference = &json["reference"];
+    let expected = ["asleep", "awake", "bones_pressing", "objects", "settling_us"];
+    assert_eq!(keys(reference), expected);
+    assert_eq!(reference["bones_pressing"], 32);
+    assert_eq!(reference["objects"], 70);
+    assert!(positive(&reference["settling_us"]));
+    for state in ["asleep", "awake"] {
+        assert_eq!(keys(&reference[state]), times);
+        assert!(times.iter().all(|t| positive(&reference[state][t])));
+    }
+    let report: BenchReport = serde_json::from_value(json).expect("a BenchReport");
+    assert!(report.mujoco.is_none());
+}
