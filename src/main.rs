@@ -107,6 +107,25 @@ enum Command {
         #[command(subcommand)]
         study: Study,
     },
+    /// Write a self-contained HTML report (index.html): placement accuracy, step
+    /// times, every shipped scenario and the bundled replays, with plots.
+    Report {
+        /// The directory to write index.html to; checked before any work.
+        #[arg(long, default_value = "report")]
+        out: std::path::PathBuf,
+        /// The placement-accuracy study's JSON (`eval accuracy --json`).
+        #[arg(long, value_name = "FILE")]
+        accuracy: Option<std::path::PathBuf>,
+        /// The benchmark's JSON (`bench --json`).
+        #[arg(long, value_name = "FILE")]
+        bench: Option<std::path::PathBuf>,
+        /// Only these scenarios (shipped names or files), comma-separated.
+        #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
+        scenarios: Option<Vec<String>>,
+        /// Only these recordings, comma-separated (default: every one in data/leap/).
+        #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
+        replays: Option<Vec<std::path::PathBuf>>,
+    },
     /// Write the project's generated meshes (U bracket, chess pawn) as OBJ files.
     Mesh {
         /// The directory to write them to.
@@ -183,6 +202,16 @@ fn main() -> ExitCode {
                 methods: method,
             };
             cli::eval::run(&options, json).map(|_| ()).map_err(|e| e.to_string())
+        }
+        Command::Report { out, accuracy, bench, scenarios, replays } => {
+            cli::report::report(cli::report::ReportArgs {
+                out: &out,
+                accuracy: accuracy.as_deref(),
+                bench: bench.as_deref(),
+                scenarios: scenarios.as_deref(),
+                replays: replays.as_deref(),
+            })
+            .map_err(|e| e.to_string())
         }
         Command::Mesh { out } => cli::write_meshes(&out).map_err(|e| e.to_string()),
         Command::Scenario { scenario: name, all, trace, json, method } => {

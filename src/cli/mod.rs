@@ -6,6 +6,7 @@ pub mod demo;
 pub mod eval;
 pub mod live;
 pub mod replay;
+pub mod report;
 pub mod scenario;
 
 use coulomb_hands::RunError;
