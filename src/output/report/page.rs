@@ -16,6 +16,9 @@ pub const SECTIONS: [&str; 4] = [
     "4. Replays",
 ];
 
+/// The sections' anchors, in page order.
+const SECTION_IDS: [&str; 4] = ["accuracy", "performance", "scenarios", "replays"];
+
 /// The command that writes the accuracy study's JSON.
 pub const ACCURACY_COMMAND: &str = "coulomb-hands eval accuracy --json > accuracy.json";
 /// The command that writes the benchmark's JSON.
@@ -52,10 +55,29 @@ pub fn html(data: &ReportData) -> String {
     p.push_str(STYLE);
     p.push_str("</style>\n</head>\n<body>\n");
     header(&mut p, data);
-    accuracy(&mut p, data.accuracy.as_ref());
-    performance(&mut p, data.bench.as_ref());
-    scenarios(&mut p, data.scenarios.as_ref());
-    replays(&mut p, data.replays.as_ref());
+    section(&mut p, 0, data.accuracy.as_ref(), accuracy, |p| {
+        absent(
+            p,
+            "no accuracy study was given.",
+            Some((ACCURACY_COMMAND, "--accuracy accuracy.json")),
+        );
+        p.push_str("<p>The thesis's Table 5.2 (placement error, mm):</p>\n");
+        let rows: Vec<Vec<String>> = thesis_rows(None)
+            .iter()
+            .map(|row| vec![escape(&row.0), thesis_cell(&row.0, Some(row))])
+            .collect();
+        table(p, &["method", "thesis: mean ± sd / median (mm)"], &rows);
+    });
+    section(&mut p, 1, data.bench.as_ref(), performance, |p| {
+        absent(p, "no benchmark was given.", Some((BENCH_COMMAND, "--bench bench.json")));
+        let _ = writeln!(p, "<p>{}</p>", escape(&thesis_fig_5_6()));
+    });
+    section(&mut p, 2, data.scenarios.as_ref(), scenarios, |p| {
+        absent(p, "no scenarios were run.", None);
+    });
+    section(&mut p, 3, data.replays.as_ref(), replays, |p| {
+        absent(p, "no recordings were replayed.", None);
+    });
     p.push_str("</body>\n</html>\n");
     p
 }
@@ -129,11 +151,24 @@ fn cell(v: f64, decimals: usize) -> String {
     format!("#{}", num(v, decimals))
 }
 
-fn section(p: &mut String, id: &str, heading: &str, source: Option<&str>) {
-    let _ = writeln!(p, "<section id=\"{id}\">\n<h2>{}</h2>", escape(heading));
-    if let Some(s) = source {
-        let _ = writeln!(p, "<p class=\"source\">Data: {}</p>", escape(s));
+/// Section `i` ([`SECTIONS`]): its heading, then where its data came from
+/// and `present` with them, or `absent`.
+fn section<T>(
+    p: &mut String,
+    i: usize,
+    data: Option<&Sourced<T>>,
+    present: fn(&mut String, &T),
+    absent: fn(&mut String),
+) {
+    let _ = writeln!(p, "<section id=\"{}\">\n<h2>{}</h2>", SECTION_IDS[i], escape(SECTIONS[i]));
+    match data {
+        Some(d) => {
+            let _ = writeln!(p, "<p class=\"source\">Data: {}</p>", escape(&d.source));
+            present(p, &d.data);
+        }
+        None => absent(p),
     }
+    p.push_str("</section>\n");
 }
 
 fn absent(p: &mut String, why: &str, command: Option<(&str, &str)>) {
@@ -180,7 +215,7 @@ fn header(p: &mut String, data: &ReportData) {
         (SECTIONS[3], data.replays.as_ref().map(|s| &s.source)),
     ];
     for (i, (name, source)) in sources.iter().enumerate() {
-        let id = ["accuracy", "performance", "scenarios", "replays"][i];
+        let id = SECTION_IDS[i];
         let what = source.map_or("not in this report".to_string(), |s| escape(s));
         cells.push(vec![format!("<a href=\"#{id}\">{}</a>", escape(name)), what]);
     }
@@ -209,22 +244,8 @@ fn thesis_cell(method: &str, row: Option<&(String, f64, f64, f64)>) -> String {
     }
 }
 
-fn accuracy(p: &mut String, study: Option<&Sourced<AccuracyStudy>>) {
-    section(p, "accuracy", SECTIONS[0], study.map(|s| s.source.as_str()));
-    let thesis = thesis_rows(study.map(|s| &s.data));
-    let Some(Sourced { data: s, .. }) = study else {
-        absent(
-            p,
-            "no accuracy study was given.",
-            Some((ACCURACY_COMMAND, "--accuracy accuracy.json")),
-        );
-        p.push_str("<p>The thesis's Table 5.2 (placement error, mm):</p>\n");
-        let rows: Vec<Vec<String>> =
-            thesis.iter().map(|row| vec![escape(&row.0), thesis_cell(&row.0, Some(row))]).collect();
-        table(p, &["method", "thesis: mean ± sd / median (mm)"], &rows);
-        p.push_str("</section>\n");
-        return;
-    };
+fn accuracy(p: &mut String, s: &AccuracyStudy) {
+    let thesis = thesis_rows(Some(s));
     let _ = writeln!(
         p,
         "<p>{} synthetic users × {} trials per method, seed {}: a cube moved from a start \
@@ -267,26 +288,23 @@ fn accuracy(p: &mut String, study: Option<&Sourced<AccuracyStudy>>) {
         "accidental drops",
     ];
     table(p, &head, &rows);
-    p.push_str("</section>\n");
 }
 
 fn step_row(name: &str, t: &StepTimes) -> Vec<String> {
     vec![escape(name), cell(t.interaction_us, 1), cell(t.rapier_us, 1), cell(t.full_us, 1)]
 }
 
-fn performance(p: &mut String, bench: Option<&Sourced<BenchReport>>) {
-    section(p, "performance", SECTIONS[1], bench.map(|s| s.source.as_str()));
-    let thesis: Vec<String> = THESIS_FIG_5_6
+/// The thesis's Fig. 5.6 in a sentence.
+fn thesis_fig_5_6() -> String {
+    let points: Vec<String> = THESIS_FIG_5_6
         .iter()
         .map(|(b, us)| format!("{:.1} ms at {b} bones", us / 1000.0))
         .collect();
-    let thesis =
-        format!("The thesis's Fig. 5.6: {} in contact (total physics).", thesis.join(", "));
-    let Some(Sourced { data: b, .. }) = bench else {
-        absent(p, "no benchmark was given.", Some((BENCH_COMMAND, "--bench bench.json")));
-        let _ = writeln!(p, "<p>{}</p>\n</section>", escape(&thesis));
-        return;
-    };
+    format!("The thesis's Fig. 5.6: {} in contact (total physics).", points.join(", "))
+}
+
+fn performance(p: &mut String, b: &BenchReport) {
+    let thesis = thesis_fig_5_6();
     p.push_str("<div class=\"row\">\n");
     let caption = "Time per physics step (µs) against bones in contact: the interaction layer \
                    (contacts and forces), rapier's step, and the full step.";
@@ -365,7 +383,6 @@ fn performance(p: &mut String, bench: Option<&Sourced<BenchReport>>) {
         }
         None => p.push_str("<p class=\"note\">MuJoCo was not measured in this benchmark.</p>\n"),
     }
-    p.push_str("</section>\n");
 }
 
 fn verdicts(p: &mut String, checks: &[Verdict]) {
@@ -384,13 +401,7 @@ fn verdicts(p: &mut String, checks: &[Verdict]) {
     table(p, &["check", "value", "bound", "result"], &rows);
 }
 
-fn scenarios(p: &mut String, runs: Option<&Sourced<Vec<ScenarioRun>>>) {
-    section(p, "scenarios", SECTIONS[2], runs.map(|s| s.source.as_str()));
-    let Some(Sourced { data: runs, .. }) = runs else {
-        absent(p, "no scenarios were run.", None);
-        p.push_str("</section>\n");
-        return;
-    };
+fn scenarios(p: &mut String, runs: &Vec<ScenarioRun>) {
     let passed = runs.iter().filter(|r| r.passed).count();
     let _ = writeln!(p, "<p>{passed} of {} scenarios passed every check.</p>", runs.len());
     let rows: Vec<Vec<String>> = runs
@@ -447,16 +458,9 @@ fn scenarios(p: &mut String, runs: Option<&Sourced<Vec<ScenarioRun>>>) {
         verdicts(p, &r.checks);
         p.push_str("</div>\n</div>\n");
     }
-    p.push_str("</section>\n");
 }
 
-fn replays(p: &mut String, runs: Option<&Sourced<Vec<ReplayRun>>>) {
-    section(p, "replays", SECTIONS[3], runs.map(|s| s.source.as_str()));
-    let Some(Sourced { data: runs, .. }) = runs else {
-        absent(p, "no recordings were replayed.", None);
-        p.push_str("</section>\n");
-        return;
-    };
+fn replays(p: &mut String, runs: &Vec<ReplayRun>) {
     for r in runs {
         let _ = writeln!(
             p,
@@ -496,5 +500,4 @@ fn replays(p: &mut String, runs: Option<&Sourced<Vec<ReplayRun>>>) {
             verdicts(p, &r.verdicts);
         }
     }
-    p.push_str("</section>\n");
 }

@@ -94,6 +94,14 @@ fn tick(v: &f64) -> String {
     if text == "-0" { "0".into() } else { text.into() }
 }
 
+/// The label of a category axis at `x`: the name of category `x` where
+/// `x` is its index, else nothing.
+fn category(names: &[&str], x: f64) -> String {
+    let i = x.round();
+    let name = names.get(i as usize).filter(|_| (x - i).abs() < 1e-6 && i >= 0.0);
+    name.map_or(String::new(), |n| n.to_string())
+}
+
 /// Text in the plots' font.
 fn font(size: u32) -> TextStyle<'static> {
     (FONT, size).into_font().into()
@@ -173,11 +181,7 @@ pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f
     let n = names.len().max(1) as f64;
     svg((760, 420), |root| {
         let mut chart = chart(root, "Placement error per method", -0.6..n - 0.4, y)?;
-        let label = |x: &f64| {
-            let i = x.round();
-            let name = names.get(i as usize).filter(|_| (x - i).abs() < 1e-6 && i >= 0.0);
-            name.map_or(String::new(), |n| n.to_string())
-        };
+        let label = |x: &f64| category(&names, *x);
         chart
             .configure_mesh()
             .max_light_lines(2)
@@ -260,6 +264,23 @@ fn sweep_lines(sweep: &[SweepPoint]) -> Vec<Line<'static>> {
         .collect()
 }
 
+/// The axes of step time (µs) against bones in contact.
+fn bones_axes<'a, Y>(chart: &mut Chart<'a, RangedCoordf64, Y>) -> Drawn
+where
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .max_light_lines(2)
+        .x_desc("bones in contact")
+        .x_label_formatter(&tick)
+        .y_desc("time per step (µs)")
+        .y_label_formatter(&tick)
+        .label_style(font(14))
+        .draw()?;
+    Ok(())
+}
+
 /// Step time against bones in contact, linear axes (ours only).
 pub(super) fn step_time_linear(sweep: &[SweepPoint]) -> String {
     let lines = sweep_lines(sweep);
@@ -268,15 +289,7 @@ pub(super) fn step_time_linear(sweep: &[SweepPoint]) -> String {
     svg((560, 400), |root| {
         let title = "Step time against bones in contact";
         let mut chart = chart(root, title, up_to_max(&xs, 8.0), up_to_max(&ys, 1.0))?;
-        chart
-            .configure_mesh()
-            .max_light_lines(2)
-            .x_desc("bones in contact")
-            .x_label_formatter(&tick)
-            .y_desc("time per step (µs)")
-            .y_label_formatter(&tick)
-            .label_style(font(14))
-            .draw()?;
+        bones_axes(&mut chart)?;
         draw_lines(&mut chart, &lines)?;
         legend_box(&mut chart, SeriesLabelPosition::UpperLeft)
     })
@@ -299,15 +312,7 @@ pub(super) fn step_time_log(bench: &BenchReport) -> String {
     svg((560, 400), |root| {
         let title = "… beside the thesis and MuJoCo (log scale)";
         let mut chart = chart(root, title, up_to_max(&xs, 8.0), log_span(&ys).log_scale())?;
-        chart
-            .configure_mesh()
-            .max_light_lines(2)
-            .x_desc("bones in contact")
-            .x_label_formatter(&tick)
-            .y_desc("time per step (µs)")
-            .y_label_formatter(&|v| format!("{v:.0}"))
-            .label_style(font(14))
-            .draw()?;
+        bones_axes(&mut chart)?;
         let positive = |l: &Line| l.points.iter().copied().filter(|p| p.1 > 0.0).collect();
         let lines: Vec<Line> = lines.iter().map(|l| Line { points: positive(l), ..*l }).collect();
         draw_lines(&mut chart, &lines)?;
@@ -348,11 +353,8 @@ pub(super) fn reference_bars(bench: &BenchReport) -> String {
     svg((560, 400), |root| {
         let title = "Reference scene: time per step";
         let mut chart = chart(root, title, -0.6..n - 0.4, span.log_scale())?;
-        let label = |x: &f64| {
-            let i = x.round();
-            let name = groups.get(i as usize).filter(|_| (x - i).abs() < 1e-6 && i >= 0.0);
-            name.map_or(String::new(), |g| g.0.to_string())
-        };
+        let names: Vec<&str> = groups.iter().map(|g| g.0).collect();
+        let label = |x: &f64| category(&names, *x);
         chart
             .configure_mesh()
             .max_light_lines(2)
