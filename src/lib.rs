@@ -6,7 +6,7 @@
 //! [`hand`] (tracked skeletal poses) → [`contact`] (contact points, skin
 //! patches, slipping surface points) → [`friction`] (the pure contact law,
 //! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps
-//! rapier) → [`output`] (traces, sessions). What hands touch is in
+//! rapier) → [`output`] (traces, sessions, the HTML report). What hands touch is in
 //! [`scene`]; [`run`] drives worlds through time (replays, scenarios, the
 //! live stream, the demo).
 //!
