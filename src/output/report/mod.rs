@@ -9,7 +9,8 @@
 //! replays (the `run` stage) or reads the study's and the benchmark's JSON
 //! ([`AccuracyStudy::load`], [`BenchReport::load`]) fills them in. Nothing
 //! in the data can make the page builder panic: non-finite numbers are
-//! shown as `—` and left out of plots, empty lists give empty plots.
+//! shown as `—`, they and any beyond 10¹² are left out of plots, and empty
+//! lists give empty plots.
 
 mod page;
 mod plots;
@@ -193,9 +194,9 @@ pub struct MujocoStep {
     pub step_us: f64,
     /// The solver settings it ran with.
     pub settings: String,
-    /// The awake ratio, as the benchmark reports it.
+    /// Our awake full step over MuJoCo's step.
     pub ratio_awake: f64,
-    /// The asleep ratio, as the benchmark reports it.
+    /// Our asleep full step over MuJoCo's step.
     pub ratio_asleep: f64,
 }
 

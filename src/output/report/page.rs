@@ -252,7 +252,7 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
          square to a target square of a chessboard.</p>",
         s.users, s.trials, s.seed
     );
-    let caption = "Blue: this study, each dot a completed trial; box from the first to the \
+    let caption = "Log axis. Blue: this study, each dot a completed trial; box from the first to the \
                    third quartile, line at the median, whiskers to the farthest trial within \
                    1.5 interquartile ranges. Red: the thesis's Table 5.2, mean ± sd (bar, \
                    dot at the mean) and median (tick).";
@@ -374,7 +374,7 @@ fn performance(p: &mut String, b: &BenchReport) {
         Some(m) => {
             let _ = writeln!(
                 p,
-                "<p>MuJoCo's settings: {}. Its ratios as the benchmark reports them: awake {}, \
+                "<p>MuJoCo's settings: {}. Our full step over MuJoCo's step: awake {}, \
                  asleep {}.</p>",
                 escape(&m.settings),
                 num(m.ratio_awake, 3),

@@ -5,6 +5,7 @@
 
 use super::{BenchReport, MethodResult, ObjectSeries, ScenarioRun, SweepPoint};
 use plotters::coord::Shift;
+use plotters::coord::combinators::LogCoord;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -72,11 +73,14 @@ fn up_to_max(values: &[f64], floor: f64) -> std::ops::Range<f64> {
     0.0..max * 1.08
 }
 
-/// A log axis over the positive `values`, a little wider than them.
+/// A log axis over the positive `values`, from a power of ten below them
+/// to a little above, about five decades at most.
 fn log_span(values: &[f64]) -> std::ops::Range<f64> {
     let positive = values.iter().copied().filter(|v| *v > 0.0 && *v <= LARGEST);
     let (lo, hi) = positive.fold((f64::INFINITY, 0.0_f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
-    if hi > 0.0 { lo / 1.6..hi * 1.6 } else { 1.0..1000.0 }
+    // plotters labels a log axis from its first power of ten up: start at one.
+    let decade = |v: f64| 10f64.powf(v.log10().floor());
+    if hi > 0.0 { decade((lo / 1.2).max(hi * 1e-5))..hi * 1.6 } else { 1.0..1000.0 }
 }
 
 /// The `p`-quantile (0..=1) of sorted `s`, linearly interpolated.
@@ -176,11 +180,13 @@ pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f
     );
     let errors: Vec<Vec<f64>> =
         methods.iter().map(|m| sorted(finite(m.errors_mm.iter().copied()))).collect();
-    let tops = errors.iter().flatten().copied().chain(thesis.iter().map(|t| t.1 + t.2));
-    let y = up_to_max(&finite(tops), 1.0);
+    let thesis_ys = thesis.iter().flat_map(|t| [t.1 - t.2, t.1 + t.2, t.3]);
+    let span = log_span(&finite(errors.iter().flatten().copied().chain(thesis_ys)));
+    let floor = span.start;
     let n = names.len().max(1) as f64;
     svg((760, 420), |root| {
-        let mut chart = chart(root, "Placement error per method", -0.6..n - 0.4, y)?;
+        let title = "Placement error per method (log scale)";
+        let mut chart = chart(root, title, -0.6..n - 0.4, span.log_scale())?;
         let label = |x: &f64| category(&names, *x);
         chart
             .configure_mesh()
@@ -193,7 +199,7 @@ pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f
             .label_style(font(14))
             .draw()?;
         for (i, e) in errors.iter().enumerate() {
-            draw_box(&mut chart, i as f64 - 0.17, e)?;
+            draw_box(&mut chart, i as f64 - 0.17, e, floor)?;
         }
         for (method, mean, sd, median) in thesis {
             let Some(i) = names.iter().position(|n| n == method) else { continue };
@@ -202,7 +208,8 @@ pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f
             }
             let x = i as f64 + 0.17;
             let style = RED.stroke_width(2);
-            let (lo, hi) = (mean - sd, mean + sd);
+            let (lo, hi) = ((mean - sd).max(floor), (mean + sd).max(floor));
+            let (mean, median) = (&mean.max(floor), &median.max(floor));
             let mut paths = vec![vec![(x, lo), (x, hi)], vec![(x - 0.05, lo), (x + 0.05, lo)]];
             paths.extend([
                 vec![(x - 0.05, hi), (x + 0.05, hi)],
@@ -220,8 +227,14 @@ fn sorted(mut v: Vec<f64>) -> Vec<f64> {
     v
 }
 
-/// One box of a box plot at `x` over sorted finite `s`, with its points.
-fn draw_box<'a>(chart: &mut Chart<'a, RangedCoordf64, RangedCoordf64>, x: f64, s: &[f64]) -> Drawn {
+/// One box of a box plot at `x` over sorted finite `s`, with its points,
+/// on a log axis whose bottom is `floor` (smaller values are drawn there).
+fn draw_box<'a>(
+    chart: &mut Chart<'a, RangedCoordf64, LogCoord<f64>>,
+    x: f64,
+    s: &[f64],
+    floor: f64,
+) -> Drawn {
     if s.is_empty() {
         return Ok(());
     }
@@ -229,6 +242,7 @@ fn draw_box<'a>(chart: &mut Chart<'a, RangedCoordf64, RangedCoordf64>, x: f64, s
     let iqr = q3 - q1;
     let low = s.iter().copied().find(|v| *v >= q1 - 1.5 * iqr).unwrap_or(q1);
     let high = s.iter().rev().copied().find(|v| *v <= q3 + 1.5 * iqr).unwrap_or(q3);
+    let [q1, median, q3, low, high] = [q1, median, q3, low, high].map(|v| v.max(floor));
     let w = 0.13;
     chart.draw_series([Rectangle::new([(x - w, q1), (x + w, q3)], BLUE.mix(0.15).filled())])?;
     let style = BLUE.stroke_width(2);
@@ -243,7 +257,7 @@ fn draw_box<'a>(chart: &mut Chart<'a, RangedCoordf64, RangedCoordf64>, x: f64, s
     chart.draw_series(paths.into_iter().map(|p| PathElement::new(p, style)))?;
     // A fixed spread across the box, so the dots do not sit on one line.
     let spread = |k: usize| ((k * 37) % 23) as f64 / 22.0 - 0.5;
-    let dots = s.iter().enumerate().map(|(k, &v)| (x + 1.6 * w * spread(k), v));
+    let dots = s.iter().enumerate().map(|(k, &v)| (x + 1.6 * w * spread(k), v.max(floor)));
     chart.draw_series(dots.map(|p| Circle::new(p, 2, BLACK.mix(0.45).filled())))?;
     Ok(())
 }
@@ -362,7 +376,9 @@ pub(super) fn reference_bars(bench: &BenchReport) -> String {
             .x_labels(groups.len() + 1)
             .x_label_formatter(&label)
             .y_desc("time per step (µs)")
-            .y_label_formatter(&|v| format!("{v:.0}"))
+            // Powers of ten only: plotters crowds the labels between them.
+            .y_labels(3)
+            .y_label_formatter(&tick)
             .label_style(font(14))
             .draw()?;
         let w = 0.8 / 3.0;
@@ -377,7 +393,8 @@ pub(super) fn reference_bars(bench: &BenchReport) -> String {
                 chart.draw_series([bar])?;
             }
         }
-        for (label, color) in PARTS.iter().copied().chain([("MuJoCo mj_step", GREY)]) {
+        let mujoco = bench.mujoco.as_ref().map(|_| ("MuJoCo mj_step", GREY));
+        for (label, color) in PARTS.iter().copied().chain(mujoco) {
             let legend = move |(x, y): (i32, i32)| {
                 Rectangle::new([(x + 4, y - 5), (x + 14, y + 5)], color.filled())
             };
