@@ -1,7 +1,8 @@
 //! `report`: an `--out` that cannot be written is an error naming it before
 //! any work, malformed `--accuracy` and `--bench` files name the file, the
-//! line and what is wrong; and, for contrast, a report on a reduced set
-//! that works.
+//! line and what is wrong; and, for contrast, the JSON that `eval accuracy`
+//! and `bench` write reads as the report's types, and a report on a reduced
+//! set works.
 
 use crate::{Scratch, cli_error, names, run};
 
@@ -99,4 +100,55 @@ fn a_report_of_one_scenario_and_one_replay_has_every_section() {
         assert!(page.contains(text), "the report lacks {text}");
     }
     assert!(!page.replace("xmlns=\"http://www.w3.org/2000/svg\"", "").contains("http"));
+}
+
+#[test]
+fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
+    use coulomb_hands::eval::{AccuracyReport, MethodResult, ThesisRow};
+    use coulomb_hands::output::report;
+    use coulomb_hands::run::bench::{BenchReport, MujocoFigures, Reference, StepTimes, SweepRow};
+    let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
+    let sweep = vec![SweepRow { bones: 6, hands: 1, samples_per_contact: 8, times }];
+    let (asleep, awake) = (times, StepTimes { rapier_us: 20.0, full_us: 21.0, ..times });
+    let reference = Reference { bones_pressing: 32, objects: 70, asleep, awake, settling_us: 9.0 };
+    let settings = "pyramidal, Euler".to_string();
+    let mujoco = MujocoFigures { step_us: 700.0, settings, ratio_awake: 0.03, ratio_asleep: 0.01 };
+    let bench = BenchReport { sweep, reference, mujoco: Some(mujoco) };
+    let text = serde_json::to_string(&bench).unwrap();
+    let read: report::BenchReport = serde_json::from_str(&text).unwrap();
+    assert_eq!((read.sweep[0].bones, read.sweep[0].full_us), (6, 3.0));
+    assert_eq!((read.reference.awake.rapier_us, read.reference.settling_us), (20.0, 9.0));
+    assert_eq!(read.mujoco.map(|m| (m.step_us, m.ratio_awake)), Some((700.0, 0.03)));
+    // A method that completed no trial has no mean: serde_json writes null.
+    let method = |name: &str, errors_mm: Vec<f64>, mean_mm: f64| MethodResult {
+        method: name.into(),
+        errors_mm,
+        mean_mm,
+        sd_mm: mean_mm,
+        median_mm: mean_mm,
+        mean_time_s: 10.0,
+        failed: 0,
+        drops: 1,
+    };
+    let study = AccuracyReport {
+        users: 2,
+        trials: 5,
+        seed: 7,
+        methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
+        thesis: vec![ThesisRow {
+            method: "coulomb".into(),
+            mean_mm: 9.2,
+            sd_mm: 5.5,
+            median_mm: 8.2,
+        }],
+    };
+    let text = serde_json::to_string(&study).unwrap();
+    let read: report::AccuracyStudy = serde_json::from_str(&text).unwrap();
+    assert_eq!((read.users, read.trials, read.seed), (2, 5, 7));
+    assert_eq!(
+        (read.methods[0].errors_mm.as_slice(), read.methods[0].mean_mm),
+        (&[1.0, 3.0][..], 2.0)
+    );
+    assert!(read.methods[1].mean_mm.is_nan() && read.methods[1].errors_mm.is_empty());
+    assert_eq!(read.thesis[0].median_mm, 8.2);
 }
