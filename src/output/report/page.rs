@@ -252,10 +252,10 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
          square to a target square of a chessboard.</p>",
         s.users, s.trials, s.seed
     );
-    let caption = "Log axis. Blue: this study, each dot a completed trial; box from the first to the \
-                   third quartile, line at the median, whiskers to the farthest trial within \
-                   1.5 interquartile ranges. Red: the thesis's Table 5.2, mean ± sd (bar, \
-                   dot at the mean) and median (tick).";
+    let caption = "Log axis. Blue: this study, each dot a completed trial; box from the first \
+                   to the third quartile, line at the median, whiskers to the farthest trial \
+                   within 1.5 interquartile ranges. Red: the thesis's Table 5.2, mean ± sd \
+                   (bar, dot at the mean) and median (tick).";
     plot(p, &plots::placement(&s.methods, &thesis), caption);
     let find = |m: &str| thesis.iter().find(|t| t.0 == m);
     let mut rows: Vec<Vec<String>> = s
