@@ -6,7 +6,7 @@
 //! [`hand`] (tracked skeletal poses) → [`contact`] (contact points, skin
 //! patches, slipping surface points) → [`friction`] (the pure contact law,
 //! thesis Eq. 3.4–3.11) → [`pipeline`] (applies the forces and steps
-//! rapier) → [`output`] (traces, sessions). What hands touch is in
+//! rapier) → [`output`] (traces, sessions, the HTML report). What hands touch is in
 //! [`scene`]; [`run`] drives worlds through time (replays, scenarios, the
 //! live stream, the demo).
 //!
@@ -34,8 +34,10 @@
 #![warn(missing_docs)]
 
 pub mod contact;
+pub mod eval;
 pub mod file_error;
 pub mod friction;
+pub mod grab;
 pub mod hand;
 pub mod input;
 pub mod output;
@@ -50,7 +52,8 @@ pub use hand::{
     Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side,
 };
 pub use pipeline::{
-    ConfigError, InteractionConfig, InteractionWorld, ObjectFriction, ObjectState, WorldError,
+    ConfigError, InteractionConfig, InteractionWorld, Method, ObjectFriction, ObjectState,
+    WorldError,
 };
 pub use run::RunError;
 pub use scene::{

@@ -57,6 +57,9 @@ enum Command {
         /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
         #[arg(long, default_value = "400", value_parser = parse_gamma)]
         gamma: coulomb_hands::GammaMode,
+        /// How hands move objects: coulomb (default), thesis, kinematic or heuristic.
+        #[arg(long, default_value = "coulomb")]
+        method: coulomb_hands::Method,
         /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
         #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE,
               value_parser = at_least_zero)]
@@ -94,6 +97,34 @@ enum Command {
         /// Print one JSON object: {"scenarios": [{"name", "passed", "checks": [..]}]}.
         #[arg(long)]
         json: bool,
+        /// How hands move objects: coulomb (default), thesis, kinematic or heuristic.
+        /// A scenario's checks were written for friction hands.
+        #[arg(long, default_value = "coulomb")]
+        method: coulomb_hands::Method,
+    },
+    /// The evaluation of thesis Ch. 5.
+    Eval {
+        #[command(subcommand)]
+        study: Study,
+    },
+    /// Write a self-contained HTML report (index.html): placement accuracy, step
+    /// times, every shipped scenario and the bundled replays, with plots.
+    Report {
+        /// The directory to write index.html to; checked before any work.
+        #[arg(long, default_value = "report")]
+        out: std::path::PathBuf,
+        /// The placement-accuracy study's JSON (`eval accuracy --json`).
+        #[arg(long, value_name = "FILE")]
+        accuracy: Option<std::path::PathBuf>,
+        /// The benchmark's JSON (`bench --json`).
+        #[arg(long, value_name = "FILE")]
+        bench: Option<std::path::PathBuf>,
+        /// Only these scenarios (shipped names or files), comma-separated.
+        #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
+        scenarios: Option<Vec<String>>,
+        /// Only these recordings, comma-separated (default: every one in data/leap/).
+        #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
+        replays: Option<Vec<std::path::PathBuf>>,
     },
     /// Write the project's generated meshes (U bracket, chess pawn) as OBJ files.
     Mesh {
@@ -126,6 +157,29 @@ enum Command {
     },
 }
 
+#[derive(Subcommand)]
+enum Study {
+    /// The positioning-accuracy study (§5.2, Table 5.2): synthetic users move a cube to a
+    /// target square with each method.
+    Accuracy {
+        /// Synthetic users.
+        #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u16).range(1..))]
+        users: u16,
+        /// Trials per user.
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u16).range(1..))]
+        trials: u16,
+        /// Seed of users, squares and tracking jitter.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// The methods to compare, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "coulomb,thesis,kinematic,heuristic")]
+        method: Vec<coulomb_hands::Method>,
+        /// Print one JSON object instead of the table.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo {
@@ -140,9 +194,28 @@ fn main() -> ExitCode {
             let (steps, boxes, tower) = (steps as usize, boxes.into(), !no_tower);
             cli::bench::bench(cli::bench::BenchArgs { steps, boxes, tower, json, mujoco, python })
         }
+        Command::Eval { study: Study::Accuracy { users, trials, seed, method, json } } => {
+            let options = coulomb_hands::eval::AccuracyOptions {
+                users: users.into(),
+                trials: trials.into(),
+                seed,
+                methods: method,
+            };
+            cli::eval::run(&options, json).map(|_| ()).map_err(|e| e.to_string())
+        }
+        Command::Report { out, accuracy, bench, scenarios, replays } => {
+            cli::report::report(cli::report::ReportArgs {
+                out: &out,
+                accuracy: accuracy.as_deref(),
+                bench: bench.as_deref(),
+                scenarios: scenarios.as_deref(),
+                replays: replays.as_deref(),
+            })
+            .map_err(|e| e.to_string())
+        }
         Command::Mesh { out } => cli::write_meshes(&out).map_err(|e| e.to_string()),
-        Command::Scenario { scenario: name, all, trace, json } => {
-            match cli::scenario::scenario(name.as_deref(), all, trace.as_deref(), json) {
+        Command::Scenario { scenario: name, all, trace, json, method } => {
+            match cli::scenario::scenario(name.as_deref(), all, trace.as_deref(), json, method) {
                 Ok(failed) if failed.is_empty() => Ok(()),
                 Ok(failed) => Err(format!("failed checks: {}", failed.join("; "))),
                 Err(e) => Err(e.to_string()),
@@ -160,6 +233,7 @@ fn main() -> ExitCode {
             record,
             object_at_grasp,
             gamma,
+            method,
             grace,
             soak,
         } => cli::replay::replay(cli::replay::ReplayArgs {
@@ -169,6 +243,7 @@ fn main() -> ExitCode {
             device,
             grace,
             gamma,
+            method,
             object: object_at_grasp,
             record: record.as_deref(),
             scene: scene.as_deref(),

@@ -3,8 +3,10 @@
 pub mod args;
 pub mod bench;
 pub mod demo;
+pub mod eval;
 pub mod live;
 pub mod replay;
+pub mod report;
 pub mod scenario;
 
 use coulomb_hands::RunError;

@@ -10,6 +10,7 @@ pub struct ReplayArgs<'a> {
     pub device: glam::Vec3,
     pub grace: f64,
     pub gamma: coulomb_hands::GammaMode,
+    pub method: coulomb_hands::Method,
     pub object: Option<coulomb_hands::run::replay::GraspObject>,
     pub record: Option<&'a std::path::Path>,
     pub scene: Option<&'a std::path::Path>,
@@ -22,7 +23,8 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     use coulomb_hands::output::Session;
     use coulomb_hands::run::observe::TraceWriter;
     use coulomb_hands::run::replay::{place_at_grasp, replay, replay_world};
-    let ReplayArgs { file, trace, json, device, grace, gamma, object, record, scene, soak } = args;
+    let ReplayArgs { file, trace, json, device, grace, gamma, method, .. } = args;
+    let ReplayArgs { object, record, scene, soak, .. } = args;
     let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
     if std::fs::read_to_string(file).is_ok_and(|t| Session::sniff(&t)) {
         if soak.is_some() {
@@ -33,7 +35,7 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     let recording = leap::load(file)?;
     let conversion = Conversion::leap_desktop(device);
     let playback = Playback::new(&recording.source_name, &recording.frames, &conversion, grace)?;
-    let mut config = InteractionConfig { gamma, ..InteractionConfig::default() };
+    let mut config = method.config(InteractionConfig { gamma, ..InteractionConfig::default() });
     if let Some(scene) = &scene {
         config = config.with_scene(scene);
     }

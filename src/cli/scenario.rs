@@ -11,6 +11,7 @@ pub fn scenario(
     all: bool,
     trace: Option<&std::path::Path>,
     json: bool,
+    method: coulomb_hands::Method,
 ) -> Result<Vec<String>, RunError> {
     use coulomb_hands::run::observe::TraceWriter;
     use coulomb_hands::run::scenario::{Scenario, shipped};
@@ -19,7 +20,10 @@ pub fn scenario(
         _ => shipped().iter().map(|s| s.0.to_string()).collect(),
     };
     // Every file is checked before anything runs.
-    let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
+    let mut scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
+    for s in scenarios.iter_mut() {
+        s.config = method.config(s.config);
+    }
     let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
     let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
     let bar = progress_bar(all && !json, scenarios.len() as u64, template);

@@ -179,6 +179,20 @@ fn site_under_bone(bone: &BoneShape, object: &ObjectView, near: SurfacePoint) ->
     surface::locate_contact(object.shape, &object.pose, near, bone_centre, reach + 0.01)
 }
 
+/// How a slipping contact moves its anchors ([`Anchor::slide`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Slip {
+    /// This step's normal force (N).
+    pub normal_force: f32,
+    /// Coulomb's kinetic friction, or `None` for the thesis's rule.
+    pub kinetic: Option<FrictionCoefficients>,
+    /// How far above the surface the inverse rays start (m).
+    pub probe_offset: f32,
+    /// Re-centre under the bone first (this crate), or slide from C (the
+    /// thesis).
+    pub recentre: bool,
+}
+
 impl Anchor {
     /// Anchors a contact at `near`, the closest features on the object.
     pub fn new(
@@ -241,18 +255,11 @@ impl Anchor {
     /// surface by inverse ray casts, to keep the slip rule's stretch
     /// (`kinetic`, Coulomb) or, with `kinetic` `None` (the thesis's rule),
     /// along the thesis's ray towards the bone. The patch moves with C.
-    pub fn slide(
-        &mut self,
-        at: &Site,
-        normal_force: f32,
-        motion: &BoneMotion,
-        object: &ObjectView,
-        kinetic: Option<FrictionCoefficients>,
-        probe_offset: f32,
-    ) {
+    pub fn slide(&mut self, at: &Site, slip: &Slip, motion: &BoneMotion, object: &ObjectView) {
+        let Slip { normal_force, kinetic, probe_offset, recentre } = *slip;
         let pose = &object.pose;
         let here = SurfacePoint { point: at.c, normal: at.surface_n };
-        let site = site_under_bone(&motion.now, object, here);
+        let site = if recentre { site_under_bone(&motion.now, object, here) } else { here };
         let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, site.point, site.normal);
         let p_new = bone_anchor.point(motion.now, site.normal);
         let target = kinetic.map(|mu| {

@@ -129,6 +129,11 @@ pub(crate) struct LawSettings {
     pub patch: patch::PatchConfig,
     /// The contact dampers' damping ratio ζ (0 without dampers).
     pub damping_ratio: f32,
+    /// The patch's deviation springs; without them each sample carries
+    /// `f/N`, as in the thesis.
+    pub deviation_springs: bool,
+    /// A slipping contact re-centres under the bone before C moves.
+    pub recentre: bool,
 }
 
 /// The reaction on the bone before the friction cone.
@@ -230,8 +235,13 @@ impl Contact {
                     return false;
                 }
                 let kinetic = (settings.kinetic == KineticFriction::Coulomb).then_some(mu);
-                let (normal_force, probe) = (self.normal_force, settings.probe_offset);
-                self.anchor.slide(&at, normal_force, motion, object, kinetic, probe);
+                let slip = anchor::Slip {
+                    normal_force: self.normal_force,
+                    kinetic,
+                    probe_offset: settings.probe_offset,
+                    recentre: settings.recentre,
+                };
+                self.anchor.slide(&at, &slip, motion, object);
             }
             FrictionState::Static => {}
         }
@@ -294,6 +304,7 @@ impl Contact {
             damping: object.damping,
             mu: object.mu,
             rocking,
+            deviation_springs: settings.deviation_springs,
         };
         patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
         self.point = step.center;

@@ -217,6 +217,8 @@ pub(crate) struct PatchStep {
     pub damping: f32,
     pub mu: FrictionCoefficients,
     pub rocking: Rocking,
+    /// Whether the samples' deviation springs act (off: `f/N` each).
+    pub deviation_springs: bool,
 }
 
 /// Buffers reused from step to step.
@@ -261,8 +263,14 @@ pub(crate) fn spread(
     let (origin, angvel) = (Vec3A::from(pose.translation), Vec3A::from(object.angvel));
     let (c, n) = (Vec3A::from(c), Vec3A::from(n));
     for (ci_local, skin) in anchor.samples.iter_mut() {
-        let skin_offset = Vec3A::from(*skin);
         let mut ci = origin + object_rot * Vec3A::from(*ci_local);
+        if !step.deviation_springs {
+            // The thesis's patch: each sample carries f/N where it lies.
+            scratch.deviations.push(Vec3::ZERO);
+            points.push(ci.into());
+            continue;
+        }
+        let skin_offset = Vec3A::from(*skin);
         let rest = c + skin_rot * skin_offset;
         let e = ci - rest;
         let e_n =

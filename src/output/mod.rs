@@ -4,8 +4,10 @@
 //!
 //! * [`trace`]: the JSON Lines trace of `replay --trace` and
 //!   `scenario --trace`;
-//! * [`session`]: a world's every call, to a file and back, bit for bit.
+//! * [`session`]: a world's every call, to a file and back, bit for bit;
+//! * [`report`]: the self-contained HTML report of `coulomb-hands report`.
 
+pub mod report;
 pub mod session;
 pub mod trace;
 

@@ -3,6 +3,7 @@
 
 use crate::contact::patch::PatchConfig;
 use crate::friction::KineticFriction;
+use crate::grab::GrabMethod;
 use crate::scene::{GammaMode, Scene};
 use glam::Vec3;
 use rapier3d::dynamics::{FrictionModel, IntegrationParameters};
@@ -59,6 +60,21 @@ pub struct InteractionConfig {
     /// model (one cone per group of 4 points plus a twist constraint),
     /// which lets a block pushed out of a tower drag the levels above it.
     pub object_friction: ObjectFriction,
+    /// The patch's deviation springs against twisting and rocking
+    /// (default); off, each sample carries `f/N`, as in the thesis.
+    pub deviation_springs: bool,
+    /// A slipping contact re-centres under the bone before its C moves
+    /// (default); off, C moves from where it is, as in the thesis.
+    pub slip_recentre: bool,
+    /// Each object's stability limit on γ and damping (default): see
+    /// `pipeline/stability.rs`. Off, as in the thesis.
+    pub stability_limit: bool,
+    /// A grab baseline instead of friction hands (`None`, the default):
+    /// [`crate::grab`].
+    pub grab: Option<GrabMethod>,
+    /// Skin friction on hand contacts (default). Without it a bone pushes
+    /// with the law's normal force only, as the grab baselines' hands do.
+    pub hand_friction: bool,
 }
 
 /// How rapier solves friction between objects (not hand contacts, which
@@ -89,6 +105,11 @@ impl Default for InteractionConfig {
             probe_offset: 0.004,
             contact_frequency: 240.0,
             object_friction: ObjectFriction::Coulomb,
+            deviation_springs: true,
+            slip_recentre: true,
+            stability_limit: true,
+            grab: None,
+            hand_friction: true,
         }
     }
 }
@@ -104,19 +125,10 @@ pub struct ConfigError {
 }
 
 impl InteractionConfig {
-    /// The thesis's kinetic rule as written and the safeguards off: pure
-    /// spring, no force cap, no penetration-speed limit. Still not the
-    /// thesis exactly: `p` is the bone's surface point, contacts begin and
-    /// end at two offsets, and the patch's deviation springs and slip
-    /// re-centring stay on.
+    /// The thesis's law as written, as far as it runs:
+    /// [`super::Method::Thesis`] on the default config.
     pub fn thesis() -> Self {
-        InteractionConfig {
-            kinetic: KineticFriction::Thesis,
-            damping_ratio: None,
-            force_cap: false,
-            max_penetration_speed: None,
-            ..Self::default()
-        }
+        super::Method::Thesis.config(Self::default())
     }
 
     /// This config with the scene's gravity, if the scene sets one.

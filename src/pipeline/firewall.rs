@@ -9,6 +9,7 @@
 //! | hand poses, the source of every contact | [`pose`] | `set_hand_pose` |
 //! | an object put at a new pose | [`placement`] | `place_object` |
 //! | the hand forces rapier integrates | [`forces`] | stage 6, `apply_forces` |
+//! | a grabbed object's pose, velocities | [`kinematic_target`], [`velocities`] | stage 7, grab |
 //!
 //! A rejected call is an error naming the field and leaves the world as it
 //! was; a force that is not finite (which finite poses and objects never
@@ -88,6 +89,16 @@ pub(super) fn placement(
 #[inline]
 pub(super) fn forces(forces: &[(Vec3, Vec3)]) -> impl Iterator<Item = &(Vec3, Vec3)> {
     forces.iter().filter(|(f, at)| f.is_finite() && at.is_finite())
+}
+
+/// A kinematically carried object's next pose, if finite.
+pub(super) fn kinematic_target(pose: rapier3d::math::Pose) -> Option<rapier3d::math::Pose> {
+    (pose.translation.is_finite() && pose.rotation.is_finite()).then_some(pose)
+}
+
+/// A grabbed object's velocities (m/s, rad/s), if finite.
+pub(super) fn velocities(linvel: Vec3, angvel: Vec3) -> Option<(Vec3, Vec3)> {
+    (linvel.is_finite() && angvel.is_finite()).then_some((linvel, angvel))
 }
 
 impl InteractionWorld {

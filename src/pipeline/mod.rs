@@ -3,6 +3,7 @@
 //!
 //! * [`config`]: [`InteractionConfig`], its validation and the rapier
 //!   parameters it implies;
+//! * [`method`]: the methods the evaluation compares, as configs;
 //! * [`world`]: the world's API (add objects and hands, set poses, read
 //!   contacts, events and states);
 //! * [`step`]: one step, stage by stage;
@@ -22,11 +23,13 @@
 
 pub mod config;
 pub(crate) mod firewall;
+pub mod method;
 pub mod record;
 pub(crate) mod stability;
 pub mod step;
 pub mod world;
 
 pub use config::{ConfigError, InteractionConfig, ObjectFriction};
+pub use method::Method;
 pub use record::{Call, Recorder};
 pub use world::{InteractionWorld, ObjectState, WorldError};

@@ -58,6 +58,10 @@ impl InteractionWorld {
             step.limits[o].contacts += 1;
         }
         for limit in step.limits.iter_mut() {
+            if !self.config.stability_limit {
+                (limit.stiffness, limit.damping) = (1.0, 1.0);
+                continue;
+            }
             // The sums become the factors that keep them ≤ 1.
             limit.stiffness = (1.0 / (limit.stiffness * dt * dt)).min(1.0);
             limit.damping = (1.0 / (limit.damping * dt)).min(1.0);

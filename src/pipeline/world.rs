@@ -70,6 +70,8 @@ pub(super) struct ObjectSlot {
     /// Set by [`InteractionWorld::reseat_contacts`]: its contacts end at
     /// the next step and begin afresh from the hand's pose then.
     pub reseat: bool,
+    /// Its grab, for the grab baselines.
+    pub grab: super::step::GrabSlot,
 }
 
 /// What the world keeps per hand.
@@ -207,6 +209,7 @@ impl InteractionWorld {
             mass: desc.mass,
             hand_force: Vec3::ZERO,
             reseat: false,
+            grab: Default::default(),
         });
         self.record(|| Call::AddObject(desc.clone()));
         Ok(id)
@@ -351,6 +354,8 @@ impl InteractionWorld {
         let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
         let rotation = firewall::placement(&slot.name, position, rotation)?;
         slot.reseat = true;
+        self.end_grab(id.0 as usize);
+        let slot = &self.objects[id.0 as usize];
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
             body.set_position(Pose::from_parts(position, rotation), true);
             body.set_linvel(Vec3::ZERO, true);

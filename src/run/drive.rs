@@ -35,23 +35,31 @@ pub trait HandSource {
     }
 }
 
-impl<S: HandSource + ?Sized> HandSource for Box<S> {
-    fn side(&self) -> Side {
-        (**self).side()
-    }
+/// A boxed or borrowed source is a source: the driver boxes its own, and
+/// a caller that reads a source after the run lends it.
+macro_rules! forward_hand_source {
+    ($($source:ty),*) => {$(
+        impl<S: HandSource + ?Sized> HandSource for $source {
+            fn side(&self) -> Side {
+                (**self).side()
+            }
 
-    fn tracker_id(&self) -> Option<i64> {
-        (**self).tracker_id()
-    }
+            fn tracker_id(&self) -> Option<i64> {
+                (**self).tracker_id()
+            }
 
-    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
-        (**self).sample(t)
-    }
+            fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+                (**self).sample(t)
+            }
 
-    fn finished(&self) -> bool {
-        (**self).finished()
-    }
+            fn finished(&self) -> bool {
+                (**self).finished()
+            }
+        }
+    )*};
 }
+
+forward_hand_source!(Box<S>, &mut S);
 
 /// A hand posed by a function of time (s): scripted motion, generated or
 /// synthetic poses, tests.

@@ -10,6 +10,8 @@
 //! * [`live`]: a live Leap Motion stream;
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
+//! * [`report`]: the scenario and replay runs that `coulomb-hands report`
+//!   shows;
 //! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side.
 
 pub mod bench;
@@ -19,6 +21,7 @@ pub mod grasp;
 pub mod live;
 pub mod observe;
 pub mod replay;
+pub mod report;
 pub mod scenario;
 pub mod soak;
 

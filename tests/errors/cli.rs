@@ -172,3 +172,18 @@ fn a_replay_scene_brings_its_gravity() {
     let moved = summary["objects"][0]["displacement"].as_f64().unwrap();
     assert!(moved < 1e-6, "the weightless box moved {moved} m");
 }
+
+#[test]
+fn an_unknown_method_is_a_usage_error_listing_the_valid_ones() {
+    let valid = "expected one of coulomb, thesis, kinematic, heuristic";
+    for args in [
+        &["scenario", "push", "--method", "friction"][..],
+        &["replay", "--method", "Coulomb", &pinch()],
+        &["eval", "accuracy", "--method", "coulomb,magnet"],
+    ] {
+        let e = usage_error(args);
+        assert!(e.contains("unknown method") && e.contains(valid), "{args:?}: {e}");
+    }
+    let e = usage_error(&["eval", "accuracy", "--users", "0"]);
+    assert!(e.contains("--users"), "{e}");
+}

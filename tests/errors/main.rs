@@ -7,6 +7,7 @@ mod cli;
 mod input;
 mod live;
 mod mesh;
+mod report;
 mod scenario;
 mod scene;
 mod session;

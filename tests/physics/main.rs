@@ -1,9 +1,11 @@
 //! Physical-outcome tests of the core: every test asserts what happens to
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
+mod baselines;
 mod bench;
 mod controls;
 mod energy;
+mod evaluation;
 mod flat;
 mod glitch;
 mod grasp;

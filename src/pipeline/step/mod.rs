@@ -12,6 +12,9 @@
 //! 6. `apply.rs`: its forces go to rapier, and are added to its object's
 //!    total for [`crate::ObjectState::hand_force`].
 //!
+//! 7. `grab.rs`: for the grab baselines only, a qualifying grasp moves
+//!    its object with the hand.
+//!
 //! Stages 5 and 6 run contact by contact, in update order.
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
@@ -20,8 +23,11 @@
 mod apply;
 mod clear;
 mod find;
+mod grab;
 mod keep;
 mod update;
+
+pub(crate) use grab::GrabSlot;
 
 use super::config::InteractionConfig;
 use super::record::Call;
@@ -32,7 +38,7 @@ use crate::contact::patch::PatchScratch;
 use crate::contact::{
     BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView,
 };
-use crate::friction::ForceCap;
+use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
 use rapier3d::parry::bounding_volume::Aabb;
@@ -92,6 +98,7 @@ impl InteractionWorld {
         contacts.sort_by_key(contact_key);
         self.contacts = contacts;
         self.scratch = step;
+        self.grab_objects();
     }
 
     /// Advances rapier by `dt` with the forces set by
@@ -125,7 +132,7 @@ impl InteractionWorld {
             gamma: slot.gamma * limit.stiffness,
             damping: self.nominal_damping(slot) * limit.damping,
             cap: self.config.force_cap.then(|| ForceCap::for_diameter(slot.diameter)),
-            mu: slot.material.skin,
+            mu: if self.config.hand_friction { slot.material.skin } else { NO_FRICTION },
         }
     }
 
@@ -147,6 +154,9 @@ impl InteractionWorld {
         self.events.push(ContactEvent { kind, hand, bone, object, point, time });
     }
 }
+
+/// Skin friction of a baseline's hand, which pushes but does not hold.
+const NO_FRICTION: FrictionCoefficients = FrictionCoefficients { static_mu: 0.0, dynamic_mu: 0.0 };
 
 /// A contact found this step, on its way to begin.
 #[derive(Debug)]
@@ -190,6 +200,8 @@ impl StepScratch {
             probe_offset: config.probe_offset,
             patch: config.patch,
             damping_ratio: config.damping_ratio.unwrap_or(0.0),
+            deviation_springs: config.deviation_springs,
+            recentre: config.slip_recentre,
         };
         StepScratch { detector, settings, ..StepScratch::default() }
     }

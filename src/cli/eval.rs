@@ -1,0 +1,47 @@
+//! `eval accuracy`: the positioning-accuracy study, printed beside the
+//! thesis's Table 5.2.
+
+use super::progress_bar;
+use coulomb_hands::RunError;
+use coulomb_hands::eval::{AccuracyOptions, AccuracyReport, accuracy};
+
+/// Runs the study and prints its table, or one JSON object.
+pub fn run(options: &AccuracyOptions, json: bool) -> Result<AccuracyReport, RunError> {
+    use std::io::IsTerminal;
+    let total = (options.users * options.trials * options.methods.len()) as u64;
+    let show = !json && std::io::stderr().is_terminal();
+    let bar = progress_bar(show, total, "{bar:30} {pos}/{len} trials ({elapsed}, eta {eta})");
+    let report = accuracy(options, &mut |done, _| bar.set_position(done as u64))?;
+    bar.finish_and_clear();
+    if json {
+        println!("{}", serde_json::to_string_pretty(&report).map_err(std::io::Error::other)?);
+    } else {
+        print_table(&report);
+    }
+    Ok(report)
+}
+
+/// Table 5.2's shape: one row per method, the thesis's figure beside it.
+fn print_table(r: &AccuracyReport) {
+    println!(
+        "positioning accuracy (thesis §5.2): {} synthetic users x {} trials, seed {}",
+        r.users, r.trials, r.seed
+    );
+    println!(
+        "{:<10} {:>24} {:>8} {:>7} {:>6}  {:>20}",
+        "method", "error mm: mean ± sd / med", "time s", "failed", "drops", "thesis (Table 5.2)"
+    );
+    for m in &r.methods {
+        let thesis =
+            r.thesis.iter().find(|t| t.method == m.method).map_or("—".to_string(), |t| {
+                format!("{:.1} ± {:.1} / {:.1}", t.mean_mm, t.sd_mm, t.median_mm)
+            });
+        let error = format!("{:.1} ± {:.1} / {:.1}", m.mean_mm, m.sd_mm, m.median_mm);
+        println!(
+            "{:<10} {error:>24} {:>8.2} {:>7} {:>6}  {thesis:>20}",
+            m.method, m.mean_time_s, m.failed, m.drops
+        );
+    }
+    let rows = "its method, the Leap Motion Interaction Engine, its re-implementation of [23]";
+    println!("(the thesis's rows: {rows})");
+}

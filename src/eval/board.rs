@@ -1,0 +1,47 @@
+//! The placement task of thesis §5.2: a cube on a chessboard, moved from a
+//! start square to a target square.
+
+use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
+use crate::scene::{Material, ObjectDesc, ObjectId, StaticDesc};
+use glam::{Quat, Vec3};
+
+/// Squares per side.
+pub const SQUARES: usize = 8;
+/// A square's side (m).
+pub const SQUARE: f32 = 0.05;
+/// The cube's half size (m): a 4 cm cube.
+pub const CUBE_HALF: f32 = 0.02;
+/// The cube's mass (kg): 40 g.
+pub const CUBE_MASS: f32 = 0.04;
+/// The board's friction with the cube (rapier's coefficient): wood on
+/// wood.
+pub const BOARD_FRICTION: f32 = 0.45;
+
+/// A square's centre on the board (m, y = 0 on the board's surface).
+pub fn square_center(square: (usize, usize)) -> Vec3 {
+    let at = |i: usize| (i as f32 + 0.5 - SQUARES as f32 / 2.0) * SQUARE;
+    Vec3::new(at(square.0), 0.0, at(square.1))
+}
+
+/// Whether a point is over the board (m).
+pub fn on_board(p: Vec3) -> bool {
+    let half = SQUARES as f32 * SQUARE / 2.0;
+    p.x.abs() <= half && p.z.abs() <= half
+}
+
+/// The task's world: the board, and the cube resting on the start square
+/// turned `yaw` radians about the vertical.
+pub fn world(
+    config: InteractionConfig,
+    start: (usize, usize),
+    yaw: f32,
+) -> Result<(InteractionWorld, ObjectId), WorldError> {
+    let mut world = InteractionWorld::new(config)?;
+    world.add_static(&StaticDesc::ground(0.0, BOARD_FRICTION))?;
+    let at = square_center(start) + Vec3::Y * CUBE_HALF;
+    let mut cube = ObjectDesc::cuboid("cube", Vec3::splat(2.0 * CUBE_HALF), CUBE_MASS, at)
+        .with_material(Material::wood());
+    cube.rotation = Quat::from_rotation_y(yaw);
+    let id = world.add_object(&cube)?;
+    Ok((world, id))
+}

@@ -1,0 +1,240 @@
+//! The evaluation of thesis Ch. 5, headless. [`accuracy`] is the
+//! positioning-accuracy study of §5.2 (Table 5.2): synthetic users move a
+//! cube across a chessboard with each method, and the placement errors
+//! are compared.
+//!
+//! * [`board`]: the task's world (board, cube, squares);
+//! * [`grip`]: the users' hand;
+//! * [`user`]: a synthetic user, a closed-loop controller of one tracked
+//!   hand, and the eyes through which it sees the cube.
+
+pub mod board;
+pub mod grip;
+pub mod user;
+
+use crate::pipeline::{InteractionConfig, Method};
+use crate::run::RunError;
+use crate::run::drive::Driver;
+use glam::Vec3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use user::{Eyes, User, UserParams};
+
+/// A trial that has not finished after this long (s) has failed.
+pub const TRIAL_LIMIT: f64 = 40.0;
+
+/// What to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AccuracyOptions {
+    /// Synthetic users (the thesis had 6).
+    pub users: usize,
+    /// Trials per user (the thesis had 20).
+    pub trials: usize,
+    /// Seed of users, squares and jitter.
+    pub seed: u64,
+    /// The methods compared, each on the same users and trials.
+    pub methods: Vec<Method>,
+}
+
+impl Default for AccuracyOptions {
+    fn default() -> Self {
+        AccuracyOptions { users: 6, trials: 20, seed: 1, methods: Method::ALL.to_vec() }
+    }
+}
+
+/// One trial's outcome.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Trial {
+    /// Horizontal distance from the cube's centre to the target square's
+    /// centre at the end (m).
+    pub error: f32,
+    /// Time until the user was done (s), or the limit.
+    pub time: f64,
+    /// The user did not finish within [`TRIAL_LIMIT`], or the cube left
+    /// the board.
+    pub failed: bool,
+    /// Times the cube fell out of the hand while lifted or carried.
+    pub drops: usize,
+}
+
+/// One method's results, as the report reads them.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct MethodResult {
+    /// The method's name.
+    pub method: String,
+    /// The placement error of each completed trial (mm).
+    pub errors_mm: Vec<f64>,
+    /// Mean, standard deviation and median of those (mm).
+    pub mean_mm: f64,
+    /// Sample standard deviation (mm).
+    pub sd_mm: f64,
+    /// Median (mm).
+    pub median_mm: f64,
+    /// Mean time per completed trial (s).
+    pub mean_time_s: f64,
+    /// Trials not completed.
+    pub failed: usize,
+    /// Accidental drops over all trials.
+    pub drops: usize,
+}
+
+/// The thesis's Table 5.2 row of a method (mm).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ThesisRow {
+    /// The method it compares with.
+    pub method: String,
+    /// Mean error (mm).
+    pub mean_mm: f64,
+    /// Standard deviation (mm).
+    pub sd_mm: f64,
+    /// Median (mm).
+    pub median_mm: f64,
+}
+
+/// The study's results.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct AccuracyReport {
+    /// Users.
+    pub users: usize,
+    /// Trials per user.
+    pub trials: usize,
+    /// The seed.
+    pub seed: u64,
+    /// Per method, in the order run.
+    pub methods: Vec<MethodResult>,
+    /// The thesis's Table 5.2: its method, the Leap Motion Interaction
+    /// Engine (here "heuristic") and its re-implementation of \[23\] ("kinematic").
+    pub thesis: Vec<ThesisRow>,
+}
+
+/// Table 5.2 of the thesis.
+pub fn thesis_table() -> Vec<ThesisRow> {
+    let row = |method: &str, mean_mm, sd_mm, median_mm| ThesisRow {
+        method: method.into(),
+        mean_mm,
+        sd_mm,
+        median_mm,
+    };
+    vec![
+        row("coulomb", 9.2, 5.5, 8.2),
+        row("heuristic", 11.1, 6.9, 9.6),
+        row("kinematic", 14.3, 8.5, 12.2),
+    ]
+}
+
+/// One task: a user and their start and target squares.
+#[derive(Debug, Clone, Copy)]
+struct Task {
+    params: UserParams,
+    start: (usize, usize),
+    target: (usize, usize),
+    yaw: f32,
+    seed: u64,
+}
+
+/// The tasks of the study, the same for every method.
+fn tasks(options: &AccuracyOptions) -> Vec<Task> {
+    let mut out = Vec::new();
+    for u in 0..options.users {
+        let mut rng = ChaCha8Rng::seed_from_u64(options.seed ^ ((u as u64 + 1) * 0x9E37_79B9));
+        let params = UserParams::draw(&mut rng);
+        for _ in 0..options.trials {
+            let mut square =
+                || (rng.random_range(0..board::SQUARES), rng.random_range(0..board::SQUARES));
+            let start = square();
+            let target = loop {
+                let t = square();
+                if t != start {
+                    break t;
+                }
+            };
+            let yaw = rng.random_range(-0.3..=0.3);
+            out.push(Task { params, start, target, yaw, seed: rng.random() });
+        }
+    }
+    out
+}
+
+/// Runs one trial with `method`.
+fn trial(method: Method, task: &Task) -> Result<Trial, RunError> {
+    let config = method.config(InteractionConfig::default());
+    let (mut world, cube) = board::world(config, task.start, task.yaw)?;
+    let target = board::square_center(task.target);
+    let begin = board::square_center(task.start) + Vec3::new(-0.1, 0.15, 0.0);
+    let sight = user::Sight::default();
+    let mut user = User::new(task.params, target, begin, sight.clone(), task.seed);
+    let mut eyes = Eyes { cube, sight };
+    let steps = (TRIAL_LIMIT / config.dt as f64).round() as usize;
+    {
+        let mut driver = Driver::new(&mut world);
+        driver.add_hand(&mut user);
+        driver.run(steps, &mut [&mut eyes])?;
+    }
+    let state = world.object_state(cube)?;
+    let error = ((state.position - target) * Vec3::new(1.0, 0.0, 1.0)).length();
+    let failed = user.done_at.is_none() || !board::on_board(state.position);
+    Ok(Trial { error, time: user.done_at.unwrap_or(TRIAL_LIMIT), failed, drops: user.drops })
+}
+
+/// Mean, sample standard deviation and median of `v` (0 for none).
+fn stats(v: &[f64]) -> (f64, f64, f64) {
+    if v.is_empty() {
+        return (0.0, 0.0, 0.0);
+    }
+    let n = v.len() as f64;
+    let mean = v.iter().sum::<f64>() / n;
+    let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    let mut sorted = v.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let mid = sorted.len() / 2;
+    let median = if sorted.len().is_multiple_of(2) {
+        (sorted[mid - 1] + sorted[mid]) / 2.0
+    } else {
+        sorted[mid]
+    };
+    (mean, var.sqrt(), median)
+}
+
+/// One method's results from its trials.
+fn summarise(method: Method, trials: &[Trial]) -> MethodResult {
+    let done: Vec<&Trial> = trials.iter().filter(|t| !t.failed).collect();
+    let errors_mm: Vec<f64> = done.iter().map(|t| t.error as f64 * 1e3).collect();
+    let (mean_mm, sd_mm, median_mm) = stats(&errors_mm);
+    let times: Vec<f64> = done.iter().map(|t| t.time).collect();
+    MethodResult {
+        method: method.name().into(),
+        mean_mm,
+        sd_mm,
+        median_mm,
+        errors_mm,
+        mean_time_s: stats(&times).0,
+        failed: trials.len() - done.len(),
+        drops: trials.iter().map(|t| t.drops).sum(),
+    }
+}
+
+/// The positioning-accuracy study: every method on the same users and
+/// trials. `progress(done, total)` is called after each trial.
+pub fn accuracy(
+    options: &AccuracyOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<AccuracyReport, RunError> {
+    let tasks = tasks(options);
+    let total = tasks.len() * options.methods.len();
+    let mut methods = Vec::new();
+    for (m, &method) in options.methods.iter().enumerate() {
+        let mut trials = Vec::with_capacity(tasks.len());
+        for (k, task) in tasks.iter().enumerate() {
+            trials.push(trial(method, task)?);
+            progress(m * tasks.len() + k + 1, total);
+        }
+        methods.push(summarise(method, &trials));
+    }
+    Ok(AccuracyReport {
+        users: options.users,
+        trials: options.trials,
+        seed: options.seed,
+        methods,
+        thesis: thesis_table(),
+    })
+}

@@ -1,0 +1,314 @@
+//! A synthetic user: a closed-loop controller of one tracked right hand
+//! that moves the cube of the placement task (thesis §5.2) to its target
+//! square. It reaches over the cube, descends, closes its grip, lifts,
+//! carries, lowers until the cube rests, opens and withdraws, then looks:
+//! if the cube is farther from the target than the user's tolerance, it
+//! grips and moves it again (at most [`MAX_CORRECTIONS`] times).
+//!
+//! It perceives only the cube's pose ([`Eyes`]), never contacts, forces or
+//! grabs, and drives every method the same way. Its tracked hand is what a
+//! Leap Motion would report: the intended hand `latency` late, plus jitter
+//! of `jitter` metres rms per axis, drawn per tracker frame (100 Hz) and
+//! interpolated (Weichert et al. 2013 measured 0.2–1.2 mm).
+
+use super::board::CUBE_HALF;
+use super::grip::grip;
+use crate::hand::{HandSample, Side};
+use crate::run::RunError;
+use crate::run::drive::{HandSource, Observer, StepView};
+use crate::scene::ObjectId;
+use glam::{Quat, Vec3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, Normal};
+use std::cell::Cell;
+use std::collections::VecDeque;
+use std::rc::Rc;
+
+/// Re-grips after the first placement, at most.
+pub const MAX_CORRECTIONS: usize = 3;
+/// The tracker's frame rate (Hz).
+const TRACKER_HZ: f64 = 100.0;
+/// Hover height of the open hand over the cube before descending (m).
+const HOVER: f32 = 0.06;
+/// How high the cube is carried (m above resting).
+const CARRY: f32 = 0.05;
+/// A cube this far below the grip's centre has left the hand (m).
+const DROPPED: f32 = 0.025;
+
+/// One user's own parameters, drawn per user.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct UserParams {
+    /// Tracking jitter, rms per axis (m).
+    pub jitter: f32,
+    /// Tracking latency (s).
+    pub latency: f64,
+    /// Hand speed when far from a goal (m/s).
+    pub speed: f32,
+    /// How fast the hand closes on a goal (1/s): speed = gain × distance
+    /// near it.
+    pub gain: f32,
+    /// The placement error the user accepts (m).
+    pub tolerance: f32,
+    /// How deep the closed grip sinks the pads into the cube (m).
+    pub squeeze: f32,
+}
+
+impl UserParams {
+    /// A user drawn from `rng`.
+    pub fn draw(rng: &mut ChaCha8Rng) -> UserParams {
+        UserParams {
+            jitter: rng.random_range(0.0002..=0.0012),
+            latency: rng.random_range(0.015..=0.045),
+            speed: rng.random_range(0.2..=0.4),
+            gain: rng.random_range(4.0..=6.0),
+            tolerance: rng.random_range(0.002..=0.005),
+            squeeze: rng.random_range(0.003..=0.006),
+        }
+    }
+}
+
+/// What a user sees: the cube's pose after the last step.
+pub type Sight = Rc<Cell<Option<(Vec3, Quat)>>>;
+
+/// The observer that shows the cube's pose to a user.
+pub struct Eyes {
+    /// The cube.
+    pub cube: ObjectId,
+    /// Shared with the user.
+    pub sight: Sight,
+}
+
+impl Observer for Eyes {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let s = step.world.object_state(self.cube)?;
+        self.sight.set(Some((s.position, s.rotation)));
+        Ok(())
+    }
+}
+
+/// Where the user is in the task.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Phase {
+    Approach,
+    Descend,
+    Close { since: f64 },
+    Lift,
+    Carry,
+    Lower { since: f64 },
+    Release,
+    Withdraw,
+    Judge { since: f64 },
+    Done,
+}
+
+/// The intended hand: the grip's centre (m), its yaw (rad) and closure.
+#[derive(Debug, Clone, Copy)]
+struct Intent {
+    t: f64,
+    at: Vec3,
+    yaw: f32,
+    closure: f32,
+}
+
+/// A synthetic user doing one trial: a [`HandSource`].
+pub struct User {
+    params: UserParams,
+    target: Vec3,
+    sight: Sight,
+    phase: Phase,
+    intent: Intent,
+    /// Recent intents, for the latency.
+    history: VecDeque<Intent>,
+    /// The tracker frame before now, and the jitter at it and the next.
+    jitter: (i64, Vec3, Vec3),
+    rng: ChaCha8Rng,
+    normal: Option<Normal<f32>>,
+    corrections: usize,
+    /// Drops while the cube was lifted or carried.
+    pub drops: usize,
+    /// When the user finished (s).
+    pub done_at: Option<f64>,
+    last_t: f64,
+}
+
+impl User {
+    /// A user with `params` who will move the cube to `target` (a square's
+    /// centre, m); its hand starts open `start` (m). `seed` draws its
+    /// jitter.
+    pub fn new(params: UserParams, target: Vec3, start: Vec3, sight: Sight, seed: u64) -> User {
+        let intent = Intent { t: 0.0, at: start, yaw: 0.0, closure: 0.0 };
+        // A jitter that is not a finite number ≥ 0 is no jitter.
+        let normal = Normal::new(0.0, params.jitter).ok();
+        let mut user = User {
+            params,
+            target,
+            sight,
+            phase: Phase::Approach,
+            intent,
+            history: VecDeque::new(),
+            jitter: (0, Vec3::ZERO, Vec3::ZERO),
+            rng: ChaCha8Rng::seed_from_u64(seed),
+            normal,
+            corrections: 0,
+            drops: 0,
+            done_at: None,
+            last_t: 0.0,
+        };
+        user.jitter = (0, user.draw(), user.draw());
+        user
+    }
+
+    /// Moves the intended grip towards `goal` at the user's speed, slowing
+    /// near it; returns the distance left (m).
+    fn reach(&mut self, goal: Vec3, speed_share: f32, dt: f32) -> f32 {
+        let gap = goal - self.intent.at;
+        let speed = (self.params.speed * speed_share).min(self.params.gain * gap.length() + 0.002);
+        self.intent.at += gap.clamp_length_max(speed * dt);
+        (goal - self.intent.at).length()
+    }
+
+    /// Turns the intended yaw towards `yaw` at 2 rad/s; returns what is left.
+    fn turn(&mut self, yaw: f32, dt: f32) -> f32 {
+        let gap = yaw - self.intent.yaw;
+        self.intent.yaw += gap.clamp(-2.0 * dt, 2.0 * dt);
+        (yaw - self.intent.yaw).abs()
+    }
+
+    /// One control step at `t` (s), seeing the cube at `cube`.
+    fn control(&mut self, t: f64, dt: f32, cube: Vec3, rotation: Quat) {
+        let to_target = (self.target - cube) * Vec3::new(1.0, 0.0, 1.0);
+        let carried = matches!(self.phase, Phase::Lift | Phase::Carry | Phase::Lower { .. });
+        if carried && cube.y < self.intent.at.y - DROPPED {
+            self.drops += 1;
+            self.phase = Phase::Release;
+        }
+        self.phase = match self.phase {
+            Phase::Approach => {
+                self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
+                let left = self.reach(cube + Vec3::Y * HOVER, 1.0, dt);
+                let turn = self.turn(grip_yaw(rotation, self.intent.yaw), dt);
+                if left < 0.002 && turn < 0.02 { Phase::Descend } else { Phase::Approach }
+            }
+            Phase::Descend => {
+                let left = self.reach(cube, 0.5, dt);
+                if left < 0.0015 { Phase::Close { since: t } } else { Phase::Descend }
+            }
+            Phase::Close { since } => {
+                self.intent.closure = (self.intent.closure + dt / 0.35).min(1.0);
+                if t - since > 0.5 { Phase::Lift } else { Phase::Close { since } }
+            }
+            Phase::Lift => {
+                let goal = Vec3::new(self.intent.at.x, CUBE_HALF + CARRY, self.intent.at.z);
+                if self.reach(goal, 0.5, dt) < 0.001 { Phase::Carry } else { Phase::Lift }
+            }
+            Phase::Carry => {
+                let goal = self.intent.at + to_target;
+                let goal = Vec3::new(goal.x, CUBE_HALF + CARRY, goal.z);
+                self.reach(goal, 1.0, dt);
+                if to_target.length() < 0.001 { Phase::Lower { since: t } } else { Phase::Carry }
+            }
+            Phase::Lower { since } => {
+                let above = cube.y - CUBE_HALF;
+                let goal = self.intent.at + to_target - Vec3::Y * above;
+                self.reach(goal, 0.25, dt);
+                let rests = above < 0.001 || t - since > 3.0;
+                if rests { Phase::Release } else { Phase::Lower { since } }
+            }
+            Phase::Release => {
+                self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
+                if self.intent.closure == 0.0 { Phase::Withdraw } else { Phase::Release }
+            }
+            Phase::Withdraw => {
+                let goal = Vec3::new(self.intent.at.x, cube.y + HOVER, self.intent.at.z);
+                if self.reach(goal, 0.5, dt) < 0.002 {
+                    Phase::Judge { since: t }
+                } else {
+                    Phase::Withdraw
+                }
+            }
+            Phase::Judge { since } if t - since < 0.3 => Phase::Judge { since },
+            Phase::Judge { .. } => {
+                if to_target.length() <= self.params.tolerance
+                    || self.corrections >= MAX_CORRECTIONS
+                {
+                    self.done_at = Some(t);
+                    Phase::Done
+                } else {
+                    self.corrections += 1;
+                    Phase::Approach
+                }
+            }
+            Phase::Done => Phase::Done,
+        };
+        self.intent.t = t;
+        self.history.push_back(self.intent);
+    }
+
+    /// The intent the tracker reports at `t`: the one `latency` ago.
+    fn delayed(&mut self, t: f64) -> Intent {
+        let then = t - self.params.latency;
+        while self.history.len() > 1 && self.history[1].t <= then {
+            self.history.pop_front();
+        }
+        self.history.front().copied().unwrap_or(self.intent)
+    }
+
+    /// The tracker's jitter at `t`: drawn per frame, interpolated
+    /// between frames.
+    fn jitter(&mut self, t: f64) -> Vec3 {
+        let frame = (t * TRACKER_HZ).floor() as i64;
+        while self.jitter.0 < frame {
+            let next = self.draw();
+            self.jitter = (self.jitter.0 + 1, self.jitter.2, next);
+        }
+        let s = (t * TRACKER_HZ - frame as f64) as f32;
+        self.jitter.1.lerp(self.jitter.2, s)
+    }
+
+    fn draw(&mut self) -> Vec3 {
+        let Some(normal) = self.normal else { return Vec3::ZERO };
+        let mut axis = || normal.sample(&mut self.rng);
+        Vec3::new(axis(), axis(), axis())
+    }
+}
+
+/// The grip's yaw for a cube turned by `rotation`: the cube's yaw, taken
+/// to the face nearest the hand's current yaw (a cube has four sides).
+fn grip_yaw(rotation: Quat, current: f32) -> f32 {
+    let x = rotation * Vec3::X;
+    let yaw = (-x.z).atan2(x.x);
+    let quarter = std::f32::consts::FRAC_PI_2;
+    yaw + ((current - yaw) / quarter).round() * quarter
+}
+
+impl HandSource for User {
+    fn side(&self) -> Side {
+        Side::Right
+    }
+
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        let dt = (t - self.last_t).max(0.0) as f32;
+        self.last_t = t;
+        if let Some((cube, rotation)) = self.sight.get()
+            && self.phase != Phase::Done
+        {
+            self.control(t, dt, cube, rotation);
+        } else {
+            self.intent.t = t;
+            self.history.push_back(self.intent);
+        }
+        let seen = self.delayed(t);
+        let at = seen.at + self.jitter(t);
+        let pose = grip(CUBE_HALF, seen.closure, self.params.squeeze).transformed(
+            Vec3::ZERO,
+            Quat::from_rotation_y(seen.yaw),
+            at,
+        );
+        Ok(Some(HandSample::from_pose(pose)))
+    }
+
+    fn finished(&self) -> bool {
+        self.phase == Phase::Done
+    }
+}

@@ -1,0 +1,503 @@
+//! The report page: [`html`] turns a [`ReportData`] into one HTML file
+//! with inline CSS and SVG, and nothing loaded from elsewhere.
+
+use super::plots;
+use super::{
+    AccuracyStudy, BenchReport, Header, ReplayRun, ReportData, ScenarioRun, Sourced, StepTimes,
+    THESIS_FIG_5_6, THESIS_TABLE_5_2, Verdict, thesis_name,
+};
+use std::fmt::Write;
+
+/// The sections' headings, in page order.
+pub const SECTIONS: [&str; 4] = [
+    "1. Placement accuracy (thesis Table 5.2)",
+    "2. Performance (thesis Fig. 5.6)",
+    "3. Scenarios",
+    "4. Replays",
+];
+
+/// The sections' anchors, in page order.
+const SECTION_IDS: [&str; 4] = ["accuracy", "performance", "scenarios", "replays"];
+
+/// The command that writes the accuracy study's JSON.
+pub const ACCURACY_COMMAND: &str = "coulomb-hands eval accuracy --json > accuracy.json";
+/// The command that writes the benchmark's JSON.
+pub const BENCH_COMMAND: &str = "coulomb-hands bench --json > bench.json";
+
+const STYLE: &str = "
+body { font-family: system-ui, sans-serif; margin: 0 auto; max-width: 1180px; padding: 0 16px;
+       color: #222; line-height: 1.4; }
+h1 { margin-bottom: 0.2em; }
+h2 { border-bottom: 2px solid #ccc; margin-top: 1.8em; }
+h3 { margin-bottom: 0.2em; }
+table { border-collapse: collapse; margin: 0.6em 0; font-size: 14px; }
+th, td { border: 1px solid #ccc; padding: 3px 8px; text-align: left; vertical-align: top; }
+th { background: #f2f2f2; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+.pass { color: #1a7f37; font-weight: 600; }
+.fail { color: #c62828; font-weight: 600; }
+.source, .caption, .note { color: #555; font-size: 14px; }
+.absent { background: #fff8e1; border-left: 4px solid #f0b400; padding: 6px 10px; }
+.row { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
+figure.plot { display: table; margin: 0; }
+figure.plot figcaption { display: table-caption; caption-side: bottom; }
+.plot svg { max-width: 100%; height: auto; }
+.scenario { border-top: 1px solid #e4e4e4; margin-top: 1em; }
+code { background: #f4f4f4; padding: 1px 4px; }
+.legend { color: #222; font-weight: 600; display: block; }
+";
+
+/// The whole page for `data`. Pure: the same data gives the same text.
+pub fn html(data: &ReportData) -> String {
+    let mut p = String::with_capacity(1 << 16);
+    p.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
+    p.push_str("<title>coulomb-hands report</title>\n<style>");
+    p.push_str(STYLE);
+    p.push_str("</style>\n</head>\n<body>\n");
+    header(&mut p, data);
+    section(&mut p, 0, data.accuracy.as_ref(), accuracy, |p| {
+        absent(
+            p,
+            "no accuracy study was given.",
+            Some((ACCURACY_COMMAND, "--accuracy accuracy.json")),
+        );
+        p.push_str("<p>The thesis's Table 5.2 (placement error, mm):</p>\n");
+        let rows: Vec<Vec<String>> = thesis_rows(None)
+            .iter()
+            .map(|row| vec![escape(&row.0), thesis_cell(&row.0, Some(row))])
+            .collect();
+        table(p, &["method", "thesis: mean ± sd / median (mm)"], &rows);
+    });
+    section(&mut p, 1, data.bench.as_ref(), performance, |p| {
+        absent(p, "no benchmark was given.", Some((BENCH_COMMAND, "--bench bench.json")));
+        let _ = writeln!(p, "<p>{}</p>", escape(&thesis_fig_5_6()));
+    });
+    section(&mut p, 2, data.scenarios.as_ref(), scenarios, |p| {
+        absent(p, "no scenarios were run.", None);
+    });
+    section(&mut p, 3, data.replays.as_ref(), replays, |p| {
+        absent(p, "no recordings were replayed.", None);
+    });
+    p.push_str("</body>\n</html>\n");
+    p
+}
+
+/// `text` with `<`, `>`, `&` and quotes escaped.
+pub fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// `v` with `decimals`, or `—` if it is not finite.
+fn num(v: f64, decimals: usize) -> String {
+    if v.is_finite() { format!("{v:.decimals$}") } else { "—".to_string() }
+}
+
+/// `mean ± sd / median`.
+fn stats(mean: f64, sd: f64, median: f64) -> String {
+    format!("{} ± {} / {}", num(mean, 1), num(sd, 1), num(median, 1))
+}
+
+/// An id for an anchor: letters, digits and `-`.
+fn slug(prefix: &str, name: &str) -> String {
+    let s: String = name.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '-' }).collect();
+    format!("{prefix}-{s}")
+}
+
+fn verdict_class(passed: bool) -> (&'static str, &'static str) {
+    if passed { ("pass", "pass") } else { ("fail", "FAIL") }
+}
+
+/// A table: `head` cells (none: no head row), then rows of cells already in HTML (`num`
+/// cells are right-aligned when they start with `#`).
+fn table(p: &mut String, head: &[&str], rows: &[Vec<String>]) {
+    p.push_str("<table>\n");
+    if !head.is_empty() {
+        p.push_str("<tr>");
+        for h in head {
+            let _ = write!(p, "<th>{}</th>", escape(h));
+        }
+        p.push_str("</tr>\n");
+    }
+    for row in rows {
+        p.push_str("<tr>");
+        for cell in row {
+            match cell.strip_prefix('#') {
+                Some(n) => {
+                    let _ = write!(p, "<td class=\"num\">{n}</td>");
+                }
+                None => {
+                    let _ = write!(p, "<td>{cell}</td>");
+                }
+            }
+        }
+        p.push_str("</tr>\n");
+    }
+    p.push_str("</table>\n");
+}
+
+/// A right-aligned number cell for [`table`].
+fn cell(v: f64, decimals: usize) -> String {
+    format!("#{}", num(v, decimals))
+}
+
+/// Section `i` ([`SECTIONS`]): its heading, then where its data came from
+/// and `present` with them, or `absent`.
+fn section<T>(
+    p: &mut String,
+    i: usize,
+    data: Option<&Sourced<T>>,
+    present: fn(&mut String, &T),
+    absent: fn(&mut String),
+) {
+    let _ = writeln!(p, "<section id=\"{}\">\n<h2>{}</h2>", SECTION_IDS[i], escape(SECTIONS[i]));
+    match data {
+        Some(d) => {
+            let _ = writeln!(p, "<p class=\"source\">Data: {}</p>", escape(&d.source));
+            present(p, &d.data);
+        }
+        None => absent(p),
+    }
+    p.push_str("</section>\n");
+}
+
+fn absent(p: &mut String, why: &str, command: Option<(&str, &str)>) {
+    let _ = write!(p, "<p class=\"absent\">Not in this report: {}", escape(why));
+    if let Some((command, option)) = command {
+        let _ = write!(
+            p,
+            " Produce it with <code>{}</code> and pass <code>{}</code> to \
+             <code>coulomb-hands report</code>.",
+            escape(command),
+            escape(option)
+        );
+    }
+    p.push_str("</p>\n");
+}
+
+fn plot(p: &mut String, svg: &str, caption: &str) {
+    plot_with_legend(p, svg, "", caption);
+}
+
+/// A plot with a caption that starts with `legend` (HTML).
+fn plot_with_legend(p: &mut String, svg: &str, legend: &str, caption: &str) {
+    let _ = writeln!(
+        p,
+        "<figure class=\"plot\">\n{svg}\n<figcaption class=\"caption\">{legend}{}</figcaption>\n\
+         </figure>",
+        escape(caption)
+    );
+}
+
+fn header(p: &mut String, data: &ReportData) {
+    let Header { version, date, machine, build, command } = &data.header;
+    p.push_str("<header>\n<h1>coulomb-hands report</h1>\n");
+    let mut cells: Vec<Vec<String>> = [("version", version), ("date", date)]
+        .iter()
+        .chain(&[("machine", machine), ("build", build)])
+        .map(|(k, v)| vec![k.to_string(), escape(v)])
+        .collect();
+    cells.push(vec!["command".into(), format!("<code>{}</code>", escape(command))]);
+    let sources = [
+        (SECTIONS[0], data.accuracy.as_ref().map(|s| &s.source)),
+        (SECTIONS[1], data.bench.as_ref().map(|s| &s.source)),
+        (SECTIONS[2], data.scenarios.as_ref().map(|s| &s.source)),
+        (SECTIONS[3], data.replays.as_ref().map(|s| &s.source)),
+    ];
+    for (i, (name, source)) in sources.iter().enumerate() {
+        let id = SECTION_IDS[i];
+        let what = source.map_or("not in this report".to_string(), |s| escape(s));
+        cells.push(vec![format!("<a href=\"#{id}\">{}</a>", escape(name)), what]);
+    }
+    table(p, &[], &cells);
+    p.push_str("</header>\n");
+}
+
+/// The thesis's Table 5.2 rows as `(method, mean, sd, median)`: the
+/// study's own, else the published ones.
+fn thesis_rows(study: Option<&AccuracyStudy>) -> Vec<(String, f64, f64, f64)> {
+    match study.filter(|s| !s.thesis.is_empty()) {
+        Some(s) => {
+            s.thesis.iter().map(|t| (t.method.clone(), t.mean_mm, t.sd_mm, t.median_mm)).collect()
+        }
+        None => THESIS_TABLE_5_2.iter().map(|r| (r.0.to_string(), r.2, r.3, r.4)).collect(),
+    }
+}
+
+fn thesis_cell(method: &str, row: Option<&(String, f64, f64, f64)>) -> String {
+    match row {
+        Some((_, mean, sd, median)) => {
+            let name = thesis_name(method).map_or(String::new(), |n| format!(" ({})", escape(n)));
+            format!("{}{name}", stats(*mean, *sd, *median))
+        }
+        None => "—".to_string(),
+    }
+}
+
+fn accuracy(p: &mut String, s: &AccuracyStudy) {
+    let thesis = thesis_rows(Some(s));
+    let _ = writeln!(
+        p,
+        "<p>{} synthetic users × {} trials per method, seed {}: a cube moved from a start \
+         square to a target square of a chessboard.</p>",
+        s.users, s.trials, s.seed
+    );
+    let caption = "Log axis. Blue: this study, each dot a completed trial; box from the first \
+                   to the third quartile, line at the median, whiskers to the farthest trial \
+                   within 1.5 interquartile ranges. Red: the thesis's Table 5.2, mean ± sd \
+                   (bar, dot at the mean) and median (tick).";
+    plot(p, &plots::placement(&s.methods, &thesis), caption);
+    let find = |m: &str| thesis.iter().find(|t| t.0 == m);
+    let mut rows: Vec<Vec<String>> = s
+        .methods
+        .iter()
+        .map(|m| {
+            vec![
+                escape(&m.method),
+                format!("#{}", m.errors_mm.len()),
+                stats(m.mean_mm, m.sd_mm, m.median_mm),
+                thesis_cell(&m.method, find(&m.method)),
+                cell(m.mean_time_s, 1),
+                format!("#{}", m.failed),
+                format!("#{}", m.drops),
+            ]
+        })
+        .collect();
+    for t in thesis.iter().filter(|t| !s.methods.iter().any(|m| m.method == t.0)) {
+        let mut row = vec![escape(&t.0), "#0".into(), "—".into(), thesis_cell(&t.0, Some(t))];
+        row.extend(["—", "—", "—"].map(String::from));
+        rows.push(row);
+    }
+    let head = [
+        "method",
+        "completed trials",
+        "error: mean ± sd / median (mm)",
+        "thesis Table 5.2 (mm)",
+        "time per trial (s)",
+        "failed trials",
+        "accidental drops",
+    ];
+    table(p, &head, &rows);
+}
+
+fn step_row(name: &str, t: &StepTimes) -> Vec<String> {
+    vec![escape(name), cell(t.interaction_us, 1), cell(t.rapier_us, 1), cell(t.full_us, 1)]
+}
+
+/// The thesis's Fig. 5.6 in a sentence.
+fn thesis_fig_5_6() -> String {
+    let points: Vec<String> = THESIS_FIG_5_6
+        .iter()
+        .map(|(b, us)| format!("{:.1} ms at {b} bones", us / 1000.0))
+        .collect();
+    format!("The thesis's Fig. 5.6: {} in contact (total physics).", points.join(", "))
+}
+
+fn performance(p: &mut String, b: &BenchReport) {
+    let thesis = thesis_fig_5_6();
+    p.push_str("<div class=\"row\">\n");
+    let caption = "Time per physics step (µs) against bones in contact: the interaction layer \
+                   (contacts and forces), rapier's step, and the full step.";
+    plot(p, &plots::step_time_linear(&b.sweep), caption);
+    let caption = format!(
+        "The same on a log axis, with the thesis's points and MuJoCo's mj_step on the \
+         reference scene ({} bones) when measured. {thesis}",
+        b.reference.bones_pressing
+    );
+    plot(p, &plots::step_time_log(b), &caption);
+    p.push_str("</div>\n");
+    let mut sweep: Vec<_> = b.sweep.iter().collect();
+    sweep.sort_by_key(|s| (s.bones, s.hands));
+    let rows: Vec<Vec<String>> = sweep
+        .iter()
+        .map(|s| {
+            let per_bone = if s.bones > 0 { s.full_us / s.bones as f64 } else { f64::NAN };
+            vec![
+                format!("#{}", s.bones),
+                format!("#{}", s.hands),
+                format!("#{}", s.samples_per_contact),
+                cell(s.interaction_us, 1),
+                cell(s.rapier_us, 1),
+                cell(s.full_us, 1),
+                cell(per_bone, 2),
+            ]
+        })
+        .collect();
+    let head = [
+        "bones in contact",
+        "hands",
+        "samples per contact",
+        "interaction layer (µs)",
+        "rapier (µs)",
+        "full step (µs)",
+        "full step per bone (µs)",
+    ];
+    table(p, &head, &rows);
+    let r = &b.reference;
+    let _ = writeln!(
+        p,
+        "<h3>Reference scene</h3>\n<p>Ground, 54-block tower and held boxes: {} bones pressing, \
+         {} objects. Asleep: rapier's sleeping as it is (the tower falls asleep); awake: \
+         sleeping off, the tower awake as while a hand works on it.</p>\n<div class=\"row\">",
+        r.bones_pressing, r.objects
+    );
+    let caption = "Time per step (µs, log axis) of the reference scene, and MuJoCo's mj_step \
+                   on the same scene when measured.";
+    plot(p, &plots::reference_bars(b), caption);
+    let mut rows = vec![step_row("tower asleep", &r.asleep), step_row("tower awake", &r.awake)];
+    rows.push(vec![
+        "first second (settling)".into(),
+        "—".into(),
+        "—".into(),
+        cell(r.settling_us, 1),
+    ]);
+    if let Some(m) = &b.mujoco {
+        rows.push(vec!["MuJoCo mj_step".into(), "—".into(), "—".into(), cell(m.step_us, 1)]);
+    }
+    table(
+        p,
+        &["reference scene", "interaction layer (µs)", "rapier (µs)", "full step (µs)"],
+        &rows,
+    );
+    p.push_str("</div>\n");
+    match &b.mujoco {
+        Some(m) => {
+            let _ = writeln!(
+                p,
+                "<p>MuJoCo's settings: {}. Our full step over MuJoCo's step: awake {}, \
+                 asleep {}.</p>",
+                escape(&m.settings),
+                num(m.ratio_awake, 3),
+                num(m.ratio_asleep, 3)
+            );
+        }
+        None => p.push_str("<p class=\"note\">MuJoCo was not measured in this benchmark.</p>\n"),
+    }
+}
+
+fn verdicts(p: &mut String, checks: &[Verdict]) {
+    let rows: Vec<Vec<String>> = checks
+        .iter()
+        .map(|c| {
+            let (class, word) = verdict_class(c.passed);
+            vec![
+                escape(&c.name),
+                cell(c.value, 4),
+                escape(&c.bound),
+                format!("<span class=\"{class}\">{word}</span>"),
+            ]
+        })
+        .collect();
+    table(p, &["check", "value", "bound", "result"], &rows);
+}
+
+fn scenarios(p: &mut String, runs: &Vec<ScenarioRun>) {
+    let passed = runs.iter().filter(|r| r.passed).count();
+    let _ = writeln!(p, "<p>{passed} of {} scenarios passed every check.</p>", runs.len());
+    let rows: Vec<Vec<String>> = runs
+        .iter()
+        .map(|r| {
+            let (class, word) = verdict_class(r.passed);
+            let ok = r.checks.iter().filter(|c| c.passed).count();
+            vec![
+                format!("<a href=\"#{}\">{}</a>", slug("scenario", &r.name), escape(&r.name)),
+                format!("<span class=\"{class}\">{word}</span>"),
+                format!("#{ok}/{}", r.checks.len()),
+                cell(r.wall_s, 2),
+            ]
+        })
+        .collect();
+    table(p, &["scenario", "result", "checks passed", "wall-clock (s)"], &rows);
+    for r in runs {
+        let (class, word) = verdict_class(r.passed);
+        let _ = writeln!(
+            p,
+            "<div class=\"scenario\">\n<h3 id=\"{}\">{} <span class=\"{class}\">{word}</span>\
+             </h3>\n<p>{}</p>",
+            slug("scenario", &r.name),
+            escape(&r.name),
+            escape(&r.description)
+        );
+        if let Some(e) = &r.error {
+            let _ = writeln!(p, "<p class=\"fail\">The run stopped: {}</p>", escape(e));
+        }
+        p.push_str("<div class=\"row\">\n");
+        let shown = plots::shown_objects(r);
+        let legend: Vec<String> = shown
+            .iter()
+            .enumerate()
+            .map(|(k, o)| {
+                let color = plots::line_color(k);
+                format!("<span style=\"color:{color}\">&#9632;</span>&nbsp;{}", escape(&o.name))
+            })
+            .collect();
+        let mut caption = "Top: the magnitude of the total hand force on each object (Eq. 3.10, \
+                           N); bottom: its centre's height (m)."
+            .to_string();
+        let shown = shown.len();
+        if shown < r.objects.len() {
+            let _ = write!(
+                caption,
+                " Showing {shown} of {} objects: those the hands pushed hardest, then those \
+                 whose height changed most.",
+                r.objects.len()
+            );
+        }
+        let legend = format!("<span class=\"legend\">{}</span> ", legend.join(" &nbsp; "));
+        plot_with_legend(p, &plots::scenario(r), &legend, &caption);
+        verdicts(p, &r.checks);
+        p.push_str("</div>\n</div>\n");
+    }
+}
+
+fn replays(p: &mut String, runs: &Vec<ReplayRun>) {
+    for r in runs {
+        let _ = writeln!(
+            p,
+            "<h3 id=\"{}\">{}</h3>",
+            slug("replay", &r.recording),
+            escape(&r.recording)
+        );
+        if let Some(e) = &r.error {
+            let _ = writeln!(p, "<p class=\"fail\">The replay stopped: {}</p>", escape(e));
+        }
+        let mut rows = vec![
+            vec!["format".into(), escape(&r.format)],
+            vec!["frames, hands".into(), format!("{}, {}", r.frames, r.hands)],
+            vec![
+                "duration (s), physics steps".into(),
+                format!("{}, {}", num(r.duration_s, 2), r.steps),
+            ],
+            vec!["object at the first grasp".into(), escape(&r.placed)],
+            vec!["contacts begun".into(), r.contacts_begun.to_string()],
+        ];
+        for o in &r.objects {
+            rows.push(vec![
+                format!("object {}: displacement (m), max speed (m/s)", escape(&o.name)),
+                format!("{}, {}", num(o.displacement_m, 3), num(o.max_speed_m_s, 3)),
+            ]);
+        }
+        rows.push(vec!["all values finite".into(), r.all_finite.to_string()]);
+        rows.push(vec!["tracking glitches left out".into(), r.glitches.to_string()]);
+        table(p, &[], &rows);
+        if r.verdicts.is_empty() {
+            p.push_str(
+                "<p class=\"note\">Verdicts per closing of the hand: not computed yet (replay \
+                 verdicts are a later issue).</p>\n",
+            );
+        } else {
+            p.push_str("<p>Verdicts per closing of the hand:</p>\n");
+            verdicts(p, &r.verdicts);
+        }
+    }
+}

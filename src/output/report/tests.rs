@@ -1,0 +1,198 @@
+//! The page builder with every section absent and present, bad numbers,
+//! and the two JSON inputs.
+
+use super::page::{ACCURACY_COMMAND, BENCH_COMMAND, SECTIONS};
+use super::*;
+
+/// The thesis's Table 5.2, as the page prints it.
+const THESIS_NUMBERS: [&str; 3] = ["9.2 ± 5.5 / 8.2", "11.1 ± 6.9 / 9.6", "14.3 ± 8.5 / 12.2"];
+
+/// Nothing is loaded from elsewhere: links are anchors, and no address
+/// but the SVG namespace appears.
+#[track_caller]
+fn assert_self_contained(page: &str) {
+    for attr in ["src=\"", "href=\""] {
+        for (at, _) in page.match_indices(attr) {
+            let value = &page[at + attr.len()..];
+            assert!(value.starts_with('#'), "{attr}{}", &value[..value.len().min(40)]);
+        }
+    }
+    let page = page.replace("xmlns=\"http://www.w3.org/2000/svg\"", "");
+    for bad in ["http://", "https://", "<script", "<link", "@import", "url("] {
+        assert!(!page.contains(bad), "the page contains {bad}");
+    }
+}
+
+fn svgs(page: &str) -> usize {
+    page.matches("<svg").count()
+}
+
+const ACCURACY_JSON: &str = r#"{"users":6,"trials":20,"seed":1,"methods":[
+  {"method":"coulomb","errors_mm":[1.5,2.0,9.0],"mean_mm":4.1,"sd_mm":4.2,"median_mm":2.0,
+   "mean_time_s":5.5,"failed":1,"drops":0},
+  {"method":"kinematic","errors_mm":[],"mean_mm":null,"sd_mm":null,"median_mm":null,
+   "mean_time_s":null,"failed":20,"drops":3}],
+ "thesis":[{"method":"coulomb","mean_mm":9.2,"sd_mm":5.5,"median_mm":8.2},
+   {"method":"heuristic","mean_mm":11.1,"sd_mm":6.9,"median_mm":9.6},
+   {"method":"kinematic","mean_mm":14.3,"sd_mm":8.5,"median_mm":12.2}]}"#;
+
+const BENCH_JSON: &str = r#"{"sweep":[
+  {"bones":6,"hands":1,"samples_per_contact":8,"interaction_us":4.5,"rapier_us":3.1,"full_us":7.6},
+  {"bones":32,"hands":2,"samples_per_contact":8,"interaction_us":18.0,"rapier_us":8.0,
+   "full_us":26.0}],
+ "reference":{"bones_pressing":32,"objects":70,
+   "asleep":{"interaction_us":18.0,"rapier_us":20.1,"full_us":38.1},
+   "awake":{"interaction_us":18.5,"rapier_us":160.0,"full_us":178.5},"settling_us":170.0},
+ "mujoco":{"step_us":770.0,"settings":"pyramidal, Euler","ratio_awake":0.23,"ratio_asleep":0.05}}"#;
+
+fn scenario(name: &str, objects: usize) -> ScenarioRun {
+    let series = |k: usize| ObjectSeries {
+        name: format!("block{k}"),
+        hand_force_n: (0..2000)
+            .map(|i| if i > 500 && k.is_multiple_of(3) { 0.4 } else { 0.0 })
+            .collect(),
+        height_m: (0..2000).map(|i| 0.02 + (k * i) as f32 * 1e-5).collect(),
+    };
+    ScenarioRun {
+        name: name.into(),
+        description: "A <b>test</b> & more".into(),
+        passed: true,
+        wall_s: 0.5,
+        checks: vec![Verdict {
+            name: "lifted (m)".into(),
+            value: 0.2,
+            bound: ">= 0.18".into(),
+            passed: true,
+        }],
+        error: None,
+        dt: 0.001,
+        objects: (0..objects).map(series).collect(),
+    }
+}
+
+fn full() -> ReportData {
+    let sourced = |source: &str| source.to_string();
+    ReportData {
+        header: Header { command: "coulomb-hands report --out 'a b'".into(), ..Header::default() },
+        accuracy: Some(Sourced {
+            source: sourced("accuracy.json"),
+            data: serde_json::from_str(ACCURACY_JSON).unwrap(),
+        }),
+        bench: Some(Sourced {
+            source: sourced("bench.json"),
+            data: serde_json::from_str(BENCH_JSON).unwrap(),
+        }),
+        scenarios: Some(Sourced {
+            source: sourced("run here"),
+            data: vec![scenario("push", 1), scenario("tower <&>", 12)],
+        }),
+        replays: Some(Sourced {
+            source: sourced("replayed here"),
+            data: vec![ReplayRun {
+                recording: "data/leap/pinch.json.lz".into(),
+                ..ReplayRun::default()
+            }],
+        }),
+    }
+}
+
+#[test]
+fn with_every_section_absent_the_page_says_how_to_make_them() {
+    let page = html(&ReportData::default());
+    for heading in SECTIONS {
+        assert!(page.contains(&page::escape(heading)), "{heading}");
+    }
+    assert_eq!(svgs(&page), 0);
+    for text in THESIS_NUMBERS.iter().chain(&["0.6 ms at 6 bones, 1.5 ms at 32 bones"]) {
+        assert!(page.contains(text), "{text}");
+    }
+    for command in [ACCURACY_COMMAND, BENCH_COMMAND] {
+        assert!(page.contains(&page::escape(command)), "{command}");
+    }
+    assert!(page.contains("--accuracy accuracy.json") && page.contains("--bench bench.json"));
+    assert_self_contained(&page);
+}
+
+#[test]
+fn with_every_section_present_there_is_one_svg_per_plot() {
+    let page = html(&full());
+    for heading in SECTIONS {
+        assert!(page.contains(&page::escape(heading)), "{heading}");
+    }
+    // Accuracy 1, performance 3 (linear, log, reference), one per scenario.
+    assert_eq!(svgs(&page), 1 + 3 + 2);
+    for text in THESIS_NUMBERS {
+        assert!(page.contains(text), "{text}");
+    }
+    assert!(page.contains("Our approach") && page.contains("Leap Motion Interaction Engine"));
+    assert!(page.contains("4.1 ± 4.2 / 2.0"), "the study's own numbers");
+    assert!(page.contains("— ± — / —"), "a method with no completed trial");
+    assert!(page.contains("MuJoCo") && page.contains("pyramidal, Euler"));
+    assert!(page.contains("tower &lt;&amp;&gt;") && !page.contains("tower <&>"));
+    assert!(page.contains("A &lt;b&gt;test&lt;/b&gt; &amp; more"));
+    assert!(page.contains("Showing 5 of 12 objects"));
+    assert!(page.contains("pinch.json.lz") && page.contains("not computed yet"));
+    assert!(page.contains("lifted (m)") && page.contains("&gt;= 0.18"));
+    assert!(page.contains("--out &#39;a b&#39;"));
+    assert_self_contained(&page);
+}
+
+#[test]
+fn bad_numbers_and_empty_data_neither_panic_nor_lose_plots() {
+    let mut data = full();
+    let study = &mut data.accuracy.as_mut().unwrap().data;
+    study.methods[0].errors_mm = vec![f64::NAN, f64::INFINITY, -3.0, 1e300, f64::MAX];
+    study.thesis.clear();
+    let bench = &mut data.bench.as_mut().unwrap().data;
+    bench.sweep[0].full_us = f64::NAN;
+    bench.sweep[1].interaction_us = -1.0;
+    bench.sweep[1].rapier_us = f64::MAX;
+    bench.reference.asleep.rapier_us = f64::MAX;
+    bench.reference.awake.full_us = 0.0;
+    bench.mujoco.as_mut().unwrap().step_us = f64::INFINITY;
+    let runs = &mut data.scenarios.as_mut().unwrap().data;
+    runs[0].dt = 0.0;
+    runs[1].dt = f64::MAX;
+    runs[0].objects[0].height_m = vec![f32::NAN; 3];
+    runs[1].objects.clear();
+    runs[1].error = Some("the world rejected a call".into());
+    let page = html(&data);
+    assert_eq!(svgs(&page), 6, "{}", page.matches("could not be drawn").count());
+    assert!(page.contains("The run stopped: the world rejected a call"));
+    // With no thesis rows in the study, the published ones are shown.
+    assert!(THESIS_NUMBERS.iter().all(|t| page.contains(t)));
+    let huge =
+        ThesisResult { method: "coulomb".into(), mean_mm: f64::MAX, sd_mm: 1.0, median_mm: 1.0 };
+    data.accuracy.as_mut().unwrap().data.thesis = vec![huge];
+    assert_eq!(svgs(&html(&data)), 6);
+    data.bench.as_mut().unwrap().data.sweep.clear();
+    data.accuracy.as_mut().unwrap().data.methods.clear();
+    assert_eq!(svgs(&html(&data)), 6);
+}
+
+#[test]
+fn the_two_json_inputs_deserialize_as_written() {
+    let study: AccuracyStudy = serde_json::from_str(ACCURACY_JSON).unwrap();
+    assert_eq!((study.users, study.trials, study.seed), (6, 20, 1));
+    assert_eq!(study.methods[0].errors_mm, [1.5, 2.0, 9.0]);
+    assert_eq!((study.methods[0].failed, study.methods[1].drops), (1, 3));
+    assert!(study.methods[1].mean_mm.is_nan(), "null is not a number");
+    assert_eq!(study.thesis[2].median_mm, 12.2);
+    let bench: BenchReport = serde_json::from_str(BENCH_JSON).unwrap();
+    assert_eq!(bench.sweep[1].bones, 32);
+    assert_eq!(bench.reference.awake.rapier_us, 160.0);
+    assert_eq!(bench.mujoco.as_ref().map(|m| m.step_us), Some(770.0));
+    let none = BENCH_JSON.split("\"mujoco\"").next().unwrap().to_string() + "\"mujoco\": null}";
+    let bench: BenchReport = serde_json::from_str(&none).unwrap();
+    assert_eq!(bench.mujoco, None);
+    let e = FileError::json::<AccuracyStudy>("a.json", r#"{"users": 6, "trials": "x"}"#);
+    let e = e.unwrap_err().to_string();
+    assert!(e.starts_with("a.json: line 1 column ") && e.contains("invalid type"), "{e}");
+}
+
+#[test]
+fn dates_are_civil_utc() {
+    assert_eq!(utc_date(0), "1970-01-01 00:00 UTC");
+    assert_eq!(utc_date(951_782_400), "2000-02-29 00:00 UTC");
+    assert_eq!(utc_date(1_700_000_000), "2023-11-14 22:13 UTC");
+}

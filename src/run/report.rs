@@ -1,0 +1,183 @@
+//! The runs that `coulomb-hands report` shows, as the report's data
+//! ([`crate::output::report`]): scenarios with every object's hand force
+//! and height per step, and recordings replayed with an object at their
+//! first grasp. A run that fails is a section entry with its error, not an
+//! error of the report.
+
+use super::RunError;
+use super::drive::{Observer, StepView};
+use super::grasp::find_grasps;
+use super::replay::{GraspObject, place_at_grasp, replay, replay_world};
+use super::scenario::Scenario;
+use crate::input::convert::Conversion;
+use crate::input::leap::{self, LeapRecording};
+use crate::input::playback::{DEFAULT_GRACE, Playback};
+use crate::output::report::{ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict};
+use crate::pipeline::InteractionConfig;
+use crate::scene::GammaMode;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Records every object's hand force (magnitude, N) and height (m) after
+/// each step.
+#[derive(Debug, Clone, Default)]
+pub struct ObjectSeriesRecorder {
+    /// One series per object, in the world's object order.
+    pub objects: Vec<ObjectSeries>,
+    steps: usize,
+}
+
+impl Observer for ObjectSeriesRecorder {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let world = step.world;
+        for (k, id) in world.object_ids().enumerate() {
+            let s = world.object_state(id)?;
+            if k == self.objects.len() {
+                // An object added during the run: not there before.
+                let name = world.object_name(id).unwrap_or("").to_string();
+                let missing = vec![f32::NAN; self.steps];
+                let (hand_force_n, height_m) = (missing.clone(), missing);
+                self.objects.push(ObjectSeries { name, hand_force_n, height_m });
+            }
+            let o = &mut self.objects[k];
+            o.hand_force_n.push(s.hand_force.length());
+            o.height_m.push(s.position.y);
+        }
+        self.steps += 1;
+        Ok(())
+    }
+}
+
+/// Runs `scenario` once, recording its objects; the run's verdict, or its
+/// error.
+pub fn scenario_run(scenario: &Scenario) -> ScenarioRun {
+    let mut recorder = ObjectSeriesRecorder::default();
+    let started = Instant::now();
+    let result = scenario.run(&mut [&mut recorder]);
+    let wall_s = started.elapsed().as_secs_f64();
+    let (passed, checks, error) = match result {
+        Ok(r) => {
+            let verdict = |c: &super::scenario::check::CheckResult| Verdict {
+                name: c.name.clone(),
+                value: c.value.into(),
+                bound: c.bound.clone(),
+                passed: c.passed,
+            };
+            (r.passed, r.checks.iter().map(verdict).collect(), None)
+        }
+        Err(e) => (false, Vec::new(), Some(e.to_string())),
+    };
+    ScenarioRun {
+        name: scenario.name.clone(),
+        description: scenario.description.clone(),
+        passed,
+        wall_s,
+        checks,
+        error,
+        dt: scenario.config.dt.into(),
+        objects: recorder.objects,
+    }
+}
+
+/// The Leap recordings bundled in the repository's `data/leap/`
+/// (`.json.lz` and `.json`), sorted; none if it cannot be read.
+pub fn bundled_recordings() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/leap");
+    let Ok(entries) = std::fs::read_dir(&dir) else { return Vec::new() };
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.to_str().is_some_and(|s| s.ends_with(".json.lz") || s.ends_with(".json")))
+        .collect();
+    files.sort();
+    files
+}
+
+/// A recording read and ready to replay.
+#[derive(Debug, Clone)]
+pub struct ReplayInput {
+    /// The file's name for the report: relative to the repository when
+    /// it is in it.
+    pub name: String,
+    /// The recording.
+    pub recording: LeapRecording,
+    /// Its hands on the physics clock.
+    pub playback: Playback,
+}
+
+/// The object held at a grasp: a 4.5 cm, 50 g box in a fist (the tracker's
+/// grab strength at least ½ at the most closed instant), else a 2 cm, 10 g
+/// box, as README's replay examples hold.
+pub fn grasp_object(playback: &Playback, track: usize, closed_at: f64) -> GraspObject {
+    let fist = playback.sample(track, closed_at).and_then(|s| s.grab).is_some_and(|g| g >= 0.5);
+    let (size, mass) = if fist { (0.045, 0.05) } else { (0.02, 0.01) };
+    GraspObject { sphere: false, size, mass }
+}
+
+impl ReplayInput {
+    /// Reads a recording; errors name the file, the frame and the field.
+    pub fn load(path: &Path) -> Result<ReplayInput, RunError> {
+        let recording = leap::load(path)?;
+        let conversion = Conversion::leap_desktop(glam::Vec3::ZERO);
+        let (name, frames) = (&recording.source_name, &recording.frames);
+        let playback = Playback::new(name, frames, &conversion, DEFAULT_GRACE)?;
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let name = path.strip_prefix(root).unwrap_or(path).display().to_string();
+        Ok(ReplayInput { name, recording, playback })
+    }
+
+    /// Replays it with automatic γ and an object ([`grasp_object`]) at its
+    /// first grasp; what it did, or its error.
+    pub fn run(&self) -> ReplayRun {
+        let mut out = ReplayRun {
+            recording: self.name.clone(),
+            format: self.recording.format_version.to_string(),
+            frames: self.playback.frames,
+            hands: self.playback.tracks.len(),
+            duration_s: self.playback.duration,
+            glitches: self.playback.skipped.len(),
+            ..ReplayRun::default()
+        };
+        if let Err(e) = self.replay_into(&mut out) {
+            out.error = Some(e.to_string());
+        }
+        out
+    }
+
+    fn replay_into(&self, out: &mut ReplayRun) -> Result<(), RunError> {
+        let config = InteractionConfig { gamma: GammaMode::Auto, ..InteractionConfig::default() };
+        let mut world = replay_world(config, false)?;
+        let playback = &self.playback;
+        let mut fixtures = Vec::new();
+        out.placed = "none: the recording has no grasp".into();
+        if let Some(first) = find_grasps(playback, 0.005).first() {
+            let object = grasp_object(playback, first.track, first.closed_at);
+            let (fixture, site) = place_at_grasp(&mut world, playback, object, 0)?;
+            fixtures.push(fixture);
+            let p = site.point;
+            out.placed = format!(
+                "a {:.1} cm, {:.0} g box at ({:.3}, {:.3}, {:.3}) m; the hand closed \
+                 {:.2}-{:.2} s, most closed at {:.2} s",
+                object.size * 100.0,
+                object.mass * 1000.0,
+                p.x,
+                p.y,
+                p.z,
+                site.closing_at,
+                site.open_at,
+                site.closed_at
+            );
+        }
+        let summary =
+            replay(&self.recording.source_name, playback, &mut world, &fixtures, &mut [])?;
+        out.steps = summary.steps;
+        out.contacts_begun = summary.contacts_begun;
+        out.all_finite = summary.all_finite;
+        let object = |o: &super::observe::ObjectSummary| ReplayObject {
+            name: o.name.clone(),
+            displacement_m: o.displacement.into(),
+            max_speed_m_s: o.max_speed.into(),
+        };
+        out.objects = summary.objects.iter().map(object).collect();
+        Ok(())
+    }
+}

@@ -1,0 +1,154 @@
+//! `report`: an `--out` that cannot be written is an error naming it before
+//! any work, malformed `--accuracy` and `--bench` files name the file, the
+//! line and what is wrong; and, for contrast, the JSON that `eval accuracy`
+//! and `bench` write reads as the report's types, and a report on a reduced
+//! set works.
+
+use crate::{Scratch, cli_error, names, run};
+
+#[test]
+fn an_unwritable_out_is_named_before_any_work() {
+    let dir = Scratch::new("report-out");
+    let plain = dir.file("plain", "a file, not a directory");
+    let under = dir.text("plain/report");
+    // Every other input is bad too: the --out error comes first, before
+    // anything is read or run.
+    let missing = dir.text("missing.json");
+    let args = ["report", "--out", &under, "--accuracy", &missing, "--scenarios", "no-such"];
+    names(cli_error(&args), &[&format!("--out {under}: cannot write there: ")]);
+    let file = plain.display().to_string();
+    names(cli_error(&["report", "--out", &file]), &[&format!("--out {file}: cannot write there")]);
+}
+
+#[test]
+fn malformed_inputs_name_the_file_the_line_and_the_fault() {
+    let dir = Scratch::new("report-inputs");
+    let out = dir.text("out");
+    let report = |flag: &str, file: &std::path::Path| {
+        cli_error(&["report", "--out", &out, flag, &file.display().to_string()])
+    };
+    let typed = dir.file("typed.json", "{\"users\": 6,\n \"trials\": \"twenty\"}");
+    let e = report("--accuracy", &typed);
+    let expected = "invalid type: string \"twenty\", expected usize";
+    names(e, &[&format!("{}: line 2 column ", typed.display()), expected]);
+    let short = dir.file("short.json", r#"{"users": 6, "trials": 20, "seed": 1, "methods": []}"#);
+    names(report("--accuracy", &short), &["short.json: line 1 column", "missing field `thesis`"]);
+    let cut = dir.file("bench.json", "{\"sweep\": [");
+    names(report("--bench", &cut), &["bench.json: line 1 column", "EOF while parsing"]);
+    let gone = dir.path("gone.json");
+    names(report("--bench", &gone), &["gone.json: ", "No such file"]);
+}
+
+#[test]
+fn a_report_of_one_scenario_and_one_replay_has_every_section() {
+    let dir = Scratch::new("report-run");
+    // Shapes only: these numbers are made up for the test.
+    let accuracy = dir.file(
+        "accuracy.json",
+        r#"{"users": 1, "trials": 2, "seed": 3, "methods": [{"method": "coulomb",
+            "errors_mm": [1.0, 2.0], "mean_mm": 1.5, "sd_mm": 0.7, "median_mm": 1.5,
+            "mean_time_s": 4.0, "failed": 0, "drops": 0}], "thesis": []}"#,
+    );
+    let times = r#"{"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0}"#;
+    let bench = dir.file(
+        "bench.json",
+        format!(
+            r#"{{"sweep": [{{"bones": 6, "hands": 1, "samples_per_contact": 8,
+                "interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0}}],
+                "reference": {{"bones_pressing": 32, "objects": 70, "asleep": {times},
+                "awake": {times}, "settling_us": 9.0}}, "mujoco": null}}"#
+        ),
+    );
+    let out = dir.text("out");
+    let (accuracy, bench) = (accuracy.display().to_string(), bench.display().to_string());
+    let (code, stdout, stderr) = run(&[
+        "report",
+        "--out",
+        &out,
+        "--accuracy",
+        &accuracy,
+        "--bench",
+        &bench,
+        "--scenarios",
+        "push",
+        "--replays",
+        "data/leap/pinch.json.lz",
+    ]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let index = dir.path("out/index.html");
+    let summary = "1 scenarios (1 passed), 1 replays; accuracy: given, bench: given";
+    assert_eq!(stdout, format!("wrote {}: {summary}\n", index.display()));
+    let files: Vec<_> = std::fs::read_dir(dir.path("out")).unwrap().collect();
+    assert_eq!(files.len(), 1, "only index.html, no probe left: {files:?}");
+    let page = std::fs::read_to_string(&index).unwrap();
+    // Accuracy 1, performance 3, one scenario.
+    assert_eq!(page.matches("<svg").count(), 5);
+    for text in [
+        "Placement accuracy",
+        "9.2 ± 5.5 / 8.2",
+        "Performance",
+        "Scenarios",
+        "id=\"scenario-push\"",
+        "pushed forward (m)",
+        "Replays",
+        "data/leap/pinch.json.lz",
+        "a 2.0 cm, 10 g box at",
+        "contacts begun",
+        "report --out",
+        "cores",
+    ] {
+        assert!(page.contains(text), "the report lacks {text}");
+    }
+    assert!(!page.replace("xmlns=\"http://www.w3.org/2000/svg\"", "").contains("http"));
+}
+
+#[test]
+fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
+    use coulomb_hands::eval::{AccuracyReport, MethodResult, ThesisRow};
+    use coulomb_hands::output::report;
+    use coulomb_hands::run::bench::{BenchReport, MujocoFigures, Reference, StepTimes, SweepRow};
+    let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
+    let sweep = vec![SweepRow { bones: 6, hands: 1, samples_per_contact: 8, times }];
+    let (asleep, awake) = (times, StepTimes { rapier_us: 20.0, full_us: 21.0, ..times });
+    let reference = Reference { bones_pressing: 32, objects: 70, asleep, awake, settling_us: 9.0 };
+    let settings = "pyramidal, Euler".to_string();
+    let mujoco = MujocoFigures { step_us: 700.0, settings, ratio_awake: 0.03, ratio_asleep: 0.01 };
+    let bench = BenchReport { sweep, reference, mujoco: Some(mujoco) };
+    let text = serde_json::to_string(&bench).unwrap();
+    let read: report::BenchReport = serde_json::from_str(&text).unwrap();
+    assert_eq!((read.sweep[0].bones, read.sweep[0].full_us), (6, 3.0));
+    assert_eq!((read.reference.awake.rapier_us, read.reference.settling_us), (20.0, 9.0));
+    assert_eq!(read.mujoco.map(|m| (m.step_us, m.ratio_awake)), Some((700.0, 0.03)));
+    // A method that completed no trial has no mean: serde_json writes null.
+    let method = |name: &str, errors_mm: Vec<f64>, mean_mm: f64| MethodResult {
+        method: name.into(),
+        errors_mm,
+        mean_mm,
+        sd_mm: mean_mm,
+        median_mm: mean_mm,
+        mean_time_s: 10.0,
+        failed: 0,
+        drops: 1,
+    };
+    let study = AccuracyReport {
+        users: 2,
+        trials: 5,
+        seed: 7,
+        methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
+        thesis: vec![ThesisRow {
+            method: "coulomb".into(),
+            mean_mm: 9.2,
+            sd_mm: 5.5,
+            median_mm: 8.2,
+        }],
+    };
+    let text = serde_json::to_string(&study).unwrap();
+    let read: report::AccuracyStudy = serde_json::from_str(&text).unwrap();
+    assert_eq!((read.users, read.trials, read.seed), (2, 5, 7));
+    assert_eq!(
+        (read.methods[0].errors_mm.as_slice(), read.methods[0].mean_mm),
+        (&[1.0, 3.0][..], 2.0)
+    );
+    assert!(read.methods[1].mean_mm.is_nan() && read.methods[1].errors_mm.is_empty());
+    assert_eq!(read.thesis[0].median_mm, 8.2);
+}
