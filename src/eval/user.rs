@@ -241,8 +241,6 @@ impl User {
             }
             Phase::Done => Phase::Done,
         };
-        self.intent.t = t;
-        self.history.push_back(self.intent);
     }
 
     /// The intent the tracker reports at `t`: the one `latency` ago.
@@ -294,10 +292,9 @@ impl HandSource for User {
             && self.phase != Phase::Done
         {
             self.control(t, dt, cube, rotation);
-        } else {
-            self.intent.t = t;
-            self.history.push_back(self.intent);
         }
+        self.intent.t = t;
+        self.history.push_back(self.intent);
         let seen = self.delayed(t);
         let at = seen.at + self.jitter(t);
         let pose = grip(CUBE_HALF, seen.closure, self.params.squeeze).transformed(

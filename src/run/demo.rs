@@ -16,32 +16,35 @@ use glam::{Quat, Vec3};
 /// on each side; 1 sinks each distal pad `squeeze` metres into the faces.
 /// The cube is centred at the origin with half size `h`.
 pub fn claw_grasp(h: f32, closure: f32, squeeze: f32) -> HandPose {
-    let gap = 0.02;
-    let offset = |r: f32| h + r - squeeze * closure + gap * (1.0 - closure);
-    let palm = Palm::from_normal_direction(
-        Vec3::new(0.0, h + 0.025, 0.0),
-        -Vec3::Y,
-        Vec3::X,
-        Vec3::new(0.045, 0.01, 0.04),
-    )
-    .unwrap_or(Palm {
-        center: Vec3::new(0.0, h + 0.025, 0.0),
-        rotation: Quat::IDENTITY,
-        half_extents: Vec3::new(0.045, 0.01, 0.04),
-    });
+    claw(h, closure, squeeze, 0.0)
+}
+
+/// [`claw_grasp`], whose fingertips also spread out as it opens: by
+/// `spread` × 3 cm when fully open, the middle phalanx by a third of that,
+/// so the fingers uncurl as a real hand's do. Fingers are 15 mm apart on a
+/// 5 cm cube and closer on smaller ones, so each pad presses the face and
+/// none its edge.
+pub fn claw(h: f32, closure: f32, squeeze: f32, spread: f32) -> HandPose {
+    let closure = closure.clamp(0.0, 1.0);
+    let open = 1.0 - closure;
+    let offset = |r: f32| h + r - squeeze * closure + 0.02 * open;
+    let half_extents = Vec3::new(0.045, 0.01, 0.04);
+    let center = Vec3::new(0.0, h + 0.025, 0.0);
+    let palm = Palm::from_normal_direction(center, -Vec3::Y, Vec3::X, half_extents)
+        .unwrap_or(Palm { center, rotation: Quat::IDENTITY, half_extents });
     let radii = [0.0095, 0.0085, 0.0085, 0.008, 0.007];
-    let finger_z = [0.0, -0.0225, -0.0075, 0.0075, 0.0225];
+    let finger_z = [0.0, -0.0225, -0.0075, 0.0075, 0.0225].map(|z| z * (h / 0.025).min(1.0));
+    let (flare, tip_flare) = (0.01 * open * spread, 0.03 * open * spread);
     let joints = std::array::from_fn(|f| {
-        let r = radii[f];
+        let x = offset(radii[f]);
         let z = finger_z[f];
-        let x = offset(r);
         // The thumb (f = 0) mirrors the fingers onto the −x face.
         let s = if f == 0 { -1.0 } else { 1.0 };
         [
             Vec3::new(s * 0.035, h + 0.02, z),
             Vec3::new(s * (x + 0.02), h + 0.008, z),
-            Vec3::new(s * x, h - 0.013, z),
-            Vec3::new(s * x, h - 0.035, z),
+            Vec3::new(s * (x + flare), h - 0.013, z),
+            Vec3::new(s * (x + tip_flare), h - 0.035 + flare, z),
         ]
     });
     HandPose::from_joints(palm, joints, radii)

@@ -80,7 +80,7 @@ impl InteractionWorld {
         let (hand, pose) = hands.filter_map(|h| Some((h, self.hand_on(o, h)?))).find_map(
             |(h, (contacts, pose))| Self::qualifies(method, &contacts, pose).then_some((h, pose)),
         )?;
-        let held = Held {
+        let mut held = Held {
             hand,
             in_palm: palm_frame(pose).inverse() * object_pose,
             curls: heuristic::curls(pose),
@@ -94,7 +94,6 @@ impl InteractionWorld {
             }
             GrabMethod::Heuristic => body.set_gravity_scale(0.0, true),
         }
-        let mut held = held;
         self.carry(o, method, &mut held);
         Some(held)
     }
