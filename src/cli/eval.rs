@@ -3,10 +3,10 @@
 
 use super::progress_bar;
 use coulomb_hands::RunError;
-use coulomb_hands::eval::{AccuracyOptions, AccuracyReport, accuracy};
+use coulomb_hands::eval::{AccuracyOptions, AccuracyStudy, accuracy};
 
 /// Runs the study and prints its table, or one JSON object.
-pub fn run(options: &AccuracyOptions, json: bool) -> Result<AccuracyReport, RunError> {
+pub fn run(options: &AccuracyOptions, json: bool) -> Result<AccuracyStudy, RunError> {
     use std::io::IsTerminal;
     let total = (options.users * options.trials * options.methods.len()) as u64;
     let show = !json && std::io::stderr().is_terminal();
@@ -22,7 +22,7 @@ pub fn run(options: &AccuracyOptions, json: bool) -> Result<AccuracyReport, RunE
 }
 
 /// Table 5.2's shape: one row per method, the thesis's figure beside it.
-fn print_table(r: &AccuracyReport) {
+fn print_table(r: &AccuracyStudy) {
     println!(
         "positioning accuracy (thesis §5.2): {} synthetic users x {} trials, seed {}",
         r.users, r.trials, r.seed

@@ -12,6 +12,9 @@ pub mod board;
 pub mod grip;
 pub mod user;
 
+pub use crate::output::report::{AccuracyStudy, MethodResult, ThesisResult};
+
+use crate::output::report::THESIS_TABLE_5_2;
 use crate::pipeline::{InteractionConfig, Method};
 use crate::run::RunError;
 use crate::run::drive::Driver;
@@ -57,69 +60,12 @@ pub struct Trial {
     pub drops: usize,
 }
 
-/// One method's results, as the report reads them.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct MethodResult {
-    /// The method's name.
-    pub method: String,
-    /// The placement error of each completed trial (mm).
-    pub errors_mm: Vec<f64>,
-    /// Mean, standard deviation and median of those (mm).
-    pub mean_mm: f64,
-    /// Sample standard deviation (mm).
-    pub sd_mm: f64,
-    /// Median (mm).
-    pub median_mm: f64,
-    /// Mean time per completed trial (s).
-    pub mean_time_s: f64,
-    /// Trials not completed.
-    pub failed: usize,
-    /// Accidental drops over all trials.
-    pub drops: usize,
-}
-
-/// The thesis's Table 5.2 row of a method (mm).
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct ThesisRow {
-    /// The method it compares with.
-    pub method: String,
-    /// Mean error (mm).
-    pub mean_mm: f64,
-    /// Standard deviation (mm).
-    pub sd_mm: f64,
-    /// Median (mm).
-    pub median_mm: f64,
-}
-
-/// The study's results.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct AccuracyReport {
-    /// Users.
-    pub users: usize,
-    /// Trials per user.
-    pub trials: usize,
-    /// The seed.
-    pub seed: u64,
-    /// Per method, in the order run.
-    pub methods: Vec<MethodResult>,
-    /// The thesis's Table 5.2: its method, the Leap Motion Interaction
-    /// Engine (here "heuristic") and its re-implementation of \[23\] ("kinematic").
-    pub thesis: Vec<ThesisRow>,
-}
-
-/// Table 5.2 of the thesis.
-pub fn thesis_table() -> Vec<ThesisRow> {
-    let row = |method: &str, mean_mm, sd_mm, median_mm| ThesisRow {
-        method: method.into(),
-        mean_mm,
-        sd_mm,
-        median_mm,
+/// Table 5.2 of the thesis, as the study compares with it.
+pub fn thesis_table() -> Vec<ThesisResult> {
+    let row = |&(method, _, mean_mm, sd_mm, median_mm): &(&str, &str, f64, f64, f64)| {
+        ThesisResult { method: method.into(), mean_mm, sd_mm, median_mm }
     };
-    vec![
-        row("coulomb", 9.2, 5.5, 8.2),
-        row("heuristic", 11.1, 6.9, 9.6),
-        row("kinematic", 14.3, 8.5, 12.2),
-    ]
+    THESIS_TABLE_5_2.iter().map(row).collect()
 }
 
 /// One task: a user and their start and target squares.
@@ -218,7 +164,7 @@ fn summarise(method: Method, trials: &[Trial]) -> MethodResult {
 pub fn accuracy(
     options: &AccuracyOptions,
     progress: &mut dyn FnMut(usize, usize),
-) -> Result<AccuracyReport, RunError> {
+) -> Result<AccuracyStudy, RunError> {
     let tasks = tasks(options);
     let total = tasks.len() * options.methods.len();
     let mut methods = Vec::new();
@@ -230,7 +176,7 @@ pub fn accuracy(
         }
         methods.push(summarise(method, &trials));
     }
-    Ok(AccuracyReport {
+    Ok(AccuracyStudy {
         users: options.users,
         trials: options.trials,
         seed: options.seed,

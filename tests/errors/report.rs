@@ -104,7 +104,7 @@ fn a_report_of_one_scenario_and_one_replay_has_every_section() {
 
 #[test]
 fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
-    use coulomb_hands::eval::{AccuracyReport, MethodResult, ThesisRow};
+    use coulomb_hands::eval::{AccuracyStudy, MethodResult, ThesisResult};
     use coulomb_hands::output::report;
     use coulomb_hands::run::bench::{BenchReport, MujocoFigures, Reference, StepTimes, SweepRow};
     let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
@@ -130,12 +130,12 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         failed: 0,
         drops: 1,
     };
-    let study = AccuracyReport {
+    let study = AccuracyStudy {
         users: 2,
         trials: 5,
         seed: 7,
         methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
-        thesis: vec![ThesisRow {
+        thesis: vec![ThesisResult {
             method: "coulomb".into(),
             mean_mm: 9.2,
             sd_mm: 5.5,
