@@ -22,7 +22,7 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
     use coulomb_hands::output::Session;
     use coulomb_hands::run::observe::TraceWriter;
-    use coulomb_hands::run::replay::{place_at_grasp, replay, replay_world};
+    use coulomb_hands::run::replay::{place_at_grasp, replay, replay_closings, replay_world};
     let ReplayArgs { file, trace, json, device, grace, gamma, method, .. } = args;
     let ReplayArgs { object, record, scene, soak, .. } = args;
     let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
@@ -43,18 +43,17 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(scene) = &scene {
         world.add_scene(scene)?;
     }
-    let mut fixtures = Vec::new();
-    let mut site = None;
-    if let Some(object) = object {
-        let (fixture, s) = place_at_grasp(&mut world, &playback, object, 0)?;
-        fixtures.push(fixture);
-        site = Some(s);
-    }
     let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
+    let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
+    observers.extend(writer.as_mut().map(|w| w as _));
+    let source = &recording.source_name;
     if let Some(duration) = soak {
-        let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
-        observers.extend(writer.as_mut().map(|w| w as _));
-        let source = &recording.source_name;
+        // A soak puts its objects back before each loop, so they must
+        // exist from the start: one object, at the first closing.
+        let mut fixtures = Vec::new();
+        if let Some(object) = object {
+            fixtures.push(place_at_grasp(&mut world, &playback, object, 0)?.0);
+        }
         let report = soak_loop(source, &playback, &mut world, &fixtures, duration, &mut observers)?;
         if let Some(w) = writer {
             w.finish()?;
@@ -65,10 +64,11 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
         }
         return Ok(());
     }
-    let summary = match writer.as_mut() {
-        Some(w) => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [w])?,
-        None => replay(&recording.source_name, &playback, &mut world, &fixtures, &mut [])?,
+    let summary = match object {
+        Some(object) => replay_closings(source, &playback, &mut world, object, &mut observers)?,
+        None => replay(source, &playback, &mut world, &[], &mut observers)?,
     };
+    drop(observers);
     if let Some(w) = writer {
         w.finish()?;
     }
@@ -92,11 +92,8 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
             println!("  {line}");
         }
     }
-    if let Some(s) = site {
-        println!(
-            "first grasp at ({:.3}, {:.3}, {:.3}) m: closed {:.2}-{:.2} s, most closed at {:.2} s",
-            s.point.x, s.point.y, s.point.z, s.closing_at, s.open_at, s.closed_at
-        );
+    if object.is_some() {
+        print_closings(&summary.closings);
     }
     println!("contacts begun: {}", summary.contacts_begun);
     for o in &summary.objects {
@@ -107,6 +104,20 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
     }
     println!("all values finite: {}", summary.all_finite);
     Ok(())
+}
+
+/// One line per closing, and how many held and were let go.
+fn print_closings(closings: &[coulomb_hands::run::closing::ClosingVerdict]) {
+    if closings.is_empty() {
+        println!("closings: 0 (no hand closes: none halves its thumb-to-fingertip distance)");
+        return;
+    }
+    let held = closings.iter().filter(|c| c.held()).count();
+    let released = closings.iter().filter(|c| c.released == Some(true)).count();
+    println!("closings: {} ({held} held, {released} released after opening)", closings.len());
+    for c in closings {
+        println!("  {c}");
+    }
 }
 
 /// `replay --loop`: the soak, with a progress bar on a terminal.

@@ -27,6 +27,10 @@ pub struct TraceHand {
     pub side: Side,
     /// The centre of the palm's grasping face (m).
     pub palm: [f32; 3],
+    /// The palm's orientation, a unit quaternion x y z w: its local y is
+    /// the grasping face's normal, its local z points to the fingers. With
+    /// `palm` it gives an object's pose in the hand's frame.
+    pub palm_rot: [f32; 4],
     /// The tracker's grab strength (0..1), if it reports one.
     pub grab: Option<f32>,
     /// The tracker's pinch strength (0..1), if it reports one.
@@ -53,6 +57,7 @@ impl TraceHand {
             id,
             side,
             palm: sample.pose.palm_surface().to_array(),
+            palm_rot: sample.pose.palm.rotation.to_array(),
             grab: sample.grab,
             pinch: sample.pinch,
         }
@@ -79,7 +84,7 @@ impl TraceLine {
 
     /// Whether every number on the line is finite.
     pub fn is_finite(&self) -> bool {
-        let hands = self.hands.iter().flat_map(|h| h.palm.iter());
+        let hands = self.hands.iter().flat_map(|h| h.palm.iter().chain(&h.palm_rot));
         let objects = self.objects.iter().flat_map(|o| o.pos.iter().chain(&o.rot).chain(&o.linvel));
         hands.chain(objects).all(|v| v.is_finite())
     }

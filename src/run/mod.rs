@@ -15,6 +15,7 @@
 //! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side.
 
 pub mod bench;
+pub mod closing;
 pub mod demo;
 pub mod drive;
 pub mod grasp;

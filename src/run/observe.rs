@@ -102,7 +102,13 @@ impl Summary {
 impl Summary {
     /// Counts this step's contacts begun and follows the objects' speeds,
     /// for a world stepped without hand sources (a session replay).
+    /// An object added during the run is followed from where it is first
+    /// seen.
     pub fn observe_world(&mut self, world: &InteractionWorld) -> Result<(), WorldError> {
+        for id in world.object_ids().skip(self.start.len()) {
+            self.start.push(world.object_state(id)?.position);
+            self.max_speed.push(0.0);
+        }
         let began = world.events().iter().filter(|e| e.kind == ContactEventKind::Began);
         self.contacts_begun += began.count();
         for (max, id) in self.max_speed.iter_mut().zip(world.object_ids()) {

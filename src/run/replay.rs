@@ -2,6 +2,7 @@
 //! world, with a summary, and objects put where the recorded hand grasps.
 
 use super::RunError;
+use super::closing::{ClosingVerdict, Closings};
 use super::drive::{self, Driver, Observer, RecordedHand};
 use super::grasp::{GraspSite, find_grasps};
 use super::observe::{ObjectSummary, Summary};
@@ -33,6 +34,9 @@ pub struct ReplaySummary {
     /// The frames and hands playback left out, one line each
     /// ([`crate::input::playback::Skipped`]).
     pub skipped: Vec<String>,
+    /// A verdict for every closing of a hand, when an object was put at
+    /// each ([`replay_closings`]); empty otherwise.
+    pub closings: Vec<ClosingVerdict>,
 }
 
 /// A world to replay into, with a ground at y = 0, recording its session
@@ -90,6 +94,21 @@ pub enum GraspObjectError {
     },
 }
 
+impl GraspObject {
+    /// This object named `name`, sitting in the grasp at `site`
+    /// ([`GraspSite::rotation`]).
+    pub fn at(self, site: &GraspSite, name: &str) -> ObjectDesc {
+        let half = 0.5 * self.size;
+        let shape = if self.sphere {
+            ShapeDesc::Sphere { radius: half }
+        } else {
+            ShapeDesc::Box { half_extents: Vec3::splat(half) }
+        };
+        let cube = ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, site.point);
+        ObjectDesc { shape, rotation: site.rotation, ..cube }
+    }
+}
+
 impl std::str::FromStr for GraspObject {
     type Err = GraspObjectError;
     fn from_str(s: &str) -> Result<Self, GraspObjectError> {
@@ -136,21 +155,13 @@ pub fn place_at_grasp(
     let grasps = find_grasps(playback, 0.005);
     let site =
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
-    let half = 0.5 * object.size;
-    let shape = if object.sphere {
-        ShapeDesc::Sphere { radius: half }
-    } else {
-        ShapeDesc::Box { half_extents: Vec3::splat(half) }
-    };
-    let cube = ObjectDesc::cuboid("grasped", Vec3::splat(object.size), object.mass, site.point);
-    let id = world.add_object(&ObjectDesc { shape, ..cube })?;
+    let id = world.add_object(&object.at(&site, "grasped"))?;
     world.set_object_locked(id, true)?;
     Ok((Fixture { object: id, release_by: site.closed_at }, site))
 }
 
 /// Whether the hand contacts on an object could hold it up, without
-/// flinging it: some two pressing contacts push from roughly opposite
-/// sides (normals more than 120° apart), their static friction,
+/// flinging it: it is squeezed ([`is_squeezed`]), the static friction,
 /// μ_st·Σ f_n, exceeds the object's weight, and the hand force plus
 /// gravity would accelerate it by less than g.
 pub fn is_gripped(world: &InteractionWorld, id: ObjectId) -> bool {
@@ -159,16 +170,24 @@ pub fn is_gripped(world: &InteractionWorld, id: ObjectId) -> bool {
     else {
         return false;
     };
-    let pressing: Vec<_> = world.contacts_on(id).iter().filter(|c| c.normal_force > 0.0).collect();
-    let opposed = pressing
-        .iter()
-        .enumerate()
-        .any(|(i, a)| pressing[i + 1..].iter().any(|b| a.normal.dot(b.normal) < -0.5));
-    let normal: f32 = pressing.iter().map(|c| c.normal_force).sum();
+    let normal: f32 = world.contacts_on(id).iter().map(|c| c.normal_force.max(0.0)).sum();
+    let opposed = is_squeezed(world, id);
     let gravity = world.config().gravity;
     let weight = mass * gravity.length();
     let net = state.hand_force + mass * gravity;
     opposed && normal * material.skin.static_mu > weight && net.length() < weight
+}
+
+/// Whether hands squeeze the object: some two of its contacts press on it
+/// from roughly opposite sides (normals more than 120° apart). Friction
+/// can only hold an object up against gravity from more than one side
+/// (an object resting on an open palm is not squeezed).
+pub fn is_squeezed(world: &InteractionWorld, id: ObjectId) -> bool {
+    let pressing: Vec<_> = world.contacts_on(id).iter().filter(|c| c.normal_force > 0.0).collect();
+    pressing
+        .iter()
+        .enumerate()
+        .any(|(i, a)| pressing[i + 1..].iter().any(|b| a.normal.dot(b.normal) < -0.5))
 }
 
 /// Releases each fixture when its object is gripped ([`is_gripped`]), or
@@ -205,13 +224,41 @@ pub fn replay(
     observers: &mut [&mut dyn Observer],
 ) -> Result<ReplaySummary, RunError> {
     let mut fixtures = Fixtures(fixtures.to_vec());
+    replay_with(source, playback, world, &mut fixtures, observers)
+}
+
+/// Replays `playback` as [`replay`] does, with an `object` put at every
+/// closing of its hands ([`Closings`]), and judges each closing: the
+/// summary's `closings`.
+pub fn replay_closings(
+    source: &str,
+    playback: &Playback,
+    world: &mut InteractionWorld,
+    object: GraspObject,
+    observers: &mut [&mut dyn Observer],
+) -> Result<ReplaySummary, RunError> {
+    let mut closings = Closings::new(playback, object)?;
+    let mut summary = replay_with(source, playback, world, &mut closings, observers)?;
+    summary.closings = closings.verdicts();
+    Ok(summary)
+}
+
+/// The replay loop, with `objects` (fixtures or closings) shown each step
+/// first.
+fn replay_with(
+    source: &str,
+    playback: &Playback,
+    world: &mut InteractionWorld,
+    objects: &mut dyn Observer,
+    observers: &mut [&mut dyn Observer],
+) -> Result<ReplaySummary, RunError> {
     let mut summary = Summary::new(world)?;
     let steps = (playback.duration / world.config().dt as f64).floor() as usize + 1;
     let mut driver = Driver::new(world);
     for track in 0..playback.tracks.len() {
         driver.add_hand(RecordedHand { playback, track });
     }
-    driver.run(steps, &mut drive::observers(vec![&mut fixtures, &mut summary], observers))?;
+    driver.run(steps, &mut drive::observers(vec![objects, &mut summary], observers))?;
     Ok(ReplaySummary {
         source: source.to_string(),
         frames: playback.frames,
@@ -222,5 +269,6 @@ pub fn replay(
         objects: summary.objects(driver.world())?,
         all_finite: summary.all_finite,
         skipped: playback.skipped.iter().map(ToString::to_string).collect(),
+        closings: Vec::new(),
     })
 }

@@ -1,20 +1,20 @@
 //! The runs that `coulomb-hands report` shows, as the report's data
 //! ([`crate::output::report`]): scenarios with every object's hand force
-//! and height per step, and recordings replayed with an object at their
-//! first grasp. A run that fails is a section entry with its error, not an
-//! error of the report.
+//! and height per step, and recordings replayed with an object at every
+//! closing of their hands, judged ([`super::closing`]). A run that fails
+//! is a section entry with its error, not an error of the report.
 
 use super::RunError;
+use super::closing::ClosingVerdict;
 use super::drive::{Observer, StepView};
 use super::grasp::find_grasps;
-use super::replay::{GraspObject, place_at_grasp, replay, replay_world};
+use super::replay::{GraspObject, replay, replay_closings, replay_world};
 use super::scenario::Scenario;
 use crate::input::convert::Conversion;
 use crate::input::leap::{self, LeapRecording};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::output::report::{ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict};
 use crate::pipeline::InteractionConfig;
-use crate::scene::GammaMode;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -125,8 +125,9 @@ impl ReplayInput {
         Ok(ReplayInput { name, recording, playback })
     }
 
-    /// Replays it with automatic γ and an object ([`grasp_object`]) at its
-    /// first grasp; what it did, or its error.
+    /// Replays it with the replay's defaults and an object
+    /// ([`grasp_object`]) at every closing of its hands; what it did and
+    /// each closing's verdicts, or its error.
     pub fn run(&self) -> ReplayRun {
         let mut out = ReplayRun {
             recording: self.name.clone(),
@@ -144,31 +145,27 @@ impl ReplayInput {
     }
 
     fn replay_into(&self, out: &mut ReplayRun) -> Result<(), RunError> {
-        let config = InteractionConfig { gamma: GammaMode::Auto, ..InteractionConfig::default() };
-        let mut world = replay_world(config, false)?;
+        let mut world = replay_world(InteractionConfig::default(), false)?;
         let playback = &self.playback;
-        let mut fixtures = Vec::new();
-        out.placed = "none: the recording has no grasp".into();
-        if let Some(first) = find_grasps(playback, 0.005).first() {
-            let object = grasp_object(playback, first.track, first.closed_at);
-            let (fixture, site) = place_at_grasp(&mut world, playback, object, 0)?;
-            fixtures.push(fixture);
-            let p = site.point;
-            out.placed = format!(
-                "a {:.1} cm, {:.0} g box at ({:.3}, {:.3}, {:.3}) m; the hand closed \
-                 {:.2}-{:.2} s, most closed at {:.2} s",
-                object.size * 100.0,
-                object.mass * 1000.0,
-                p.x,
-                p.y,
-                p.z,
-                site.closing_at,
-                site.open_at,
-                site.closed_at
-            );
-        }
-        let summary =
-            replay(&self.recording.source_name, playback, &mut world, &fixtures, &mut [])?;
+        let name = &self.recording.source_name;
+        let closings = find_grasps(playback, 0.005);
+        let summary = match closings.first() {
+            None => {
+                out.placed = "none: no hand closes in the recording".into();
+                replay(name, playback, &mut world, &[], &mut [])?
+            }
+            Some(first) => {
+                let object = grasp_object(playback, first.track, first.closed_at);
+                out.placed = format!(
+                    "a {:.1} cm, {:.0} g box at each of its {} closings",
+                    object.size * 100.0,
+                    object.mass * 1000.0,
+                    closings.len()
+                );
+                replay_closings(name, playback, &mut world, object, &mut [])?
+            }
+        };
+        out.verdicts = summary.closings.iter().flat_map(closing_verdicts).collect();
         out.steps = summary.steps;
         out.contacts_begun = summary.contacts_begun;
         out.all_finite = summary.all_finite;
@@ -180,4 +177,27 @@ impl ReplayInput {
         out.objects = summary.objects.iter().map(object).collect();
         Ok(())
     }
+}
+
+/// A closing's verdict as the report's rows: held (its drift in the palm
+/// frame against the slip bound), and let go after opening (how long after
+/// the hand began to open).
+fn closing_verdicts(c: &ClosingVerdict) -> [Verdict; 2] {
+    let label =
+        format!("{} (hand {}, closed {:.2}-{:.2} s)", c.object, c.hand, c.closing_at, c.opening_at);
+    let let_go = c.released_at.map_or(f64::NAN, |t| t - c.opening_at);
+    [
+        Verdict {
+            name: format!("{label}: held, drift in the palm frame (mm)"),
+            value: f64::from(c.drift) * 1e3,
+            bound: format!("< {:.1}", c.slip_bound * 1e3),
+            passed: c.held(),
+        },
+        Verdict {
+            name: format!("{label}: released, after the hand began to open (s)"),
+            value: let_go,
+            bound: format!("≤ {:.2}", c.open_at + super::closing::RELEASE_WINDOW - c.opening_at),
+            passed: c.released == Some(true),
+        },
+    ]
 }

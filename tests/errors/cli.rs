@@ -66,16 +66,23 @@ fn bad_recordings_name_the_file_frame_and_field() {
 }
 
 #[test]
-fn objects_at_a_grasp_the_recording_lacks_or_cannot_hold_are_errors() {
+fn objects_at_closings_the_recording_lacks_or_that_cannot_exist() {
     let dir = Scratch::new("cli-grasp");
     let empty = dir.file("empty.json", recording(&[frame(0, &[]), frame(1000, &[])]));
-    let e =
-        cli_error(&["replay", "--object-at-grasp", "box:0.04:0.05", &empty.display().to_string()]);
-    assert_eq!(e, "the recording has 0 grasps, so there is no grasp 1");
+    let empty = empty.display().to_string();
+    // No hand closes: the replay runs and says so.
+    let (code, stdout, stderr) = run(&["replay", "--object-at-grasp", "box:0.04:0.05", &empty]);
+    assert_eq!(code, Some(0), "{stderr}");
+    names(&stdout, &["closings: 0 (no hand closes"]);
+    // An object that cannot exist is refused before the replay, closings or not.
     let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
     let e =
         cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &one.display().to_string()]);
-    names(e, &["object 'grasped': shape.half_extents: must be finite and within ±10000 m"]);
+    names(e, &["object 'closing-1': shape.half_extents: must be finite and within ±10000 m"]);
+    let e = cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &empty]);
+    names(e, &["object 'closing-1': shape.half_extents"]);
+    let e = cli_error(&["replay", "--object-at-grasp", "box:0.04:0.05", "--loop", "1s", &empty]);
+    assert_eq!(e, "the recording has 0 grasps, so there is no grasp 1");
 }
 
 #[test]
@@ -186,4 +193,22 @@ fn an_unknown_method_is_a_usage_error_listing_the_valid_ones() {
     }
     let e = usage_error(&["eval", "accuracy", "--users", "0"]);
     assert!(e.contains("--users"), "{e}");
+}
+
+#[test]
+fn replay_json_carries_a_verdict_per_closing_and_the_text_a_line_each() {
+    let args = ["replay", "data/leap/grab.json.lz", "--object-at-grasp", "box:0.045:0.05"];
+    let (code, json, stderr) = run(&[&args[..], &["--json"]].concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    let summary: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let closings = summary["closings"].as_array().unwrap();
+    assert_eq!(closings.len(), 2, "{json}");
+    for c in closings {
+        for key in ["slipped_at", "drift", "slip_bound", "released", "released_at", "open_at"] {
+            assert!(c.get(key).is_some(), "{key} missing: {c}");
+        }
+    }
+    let (_, text, _) = run(&args);
+    let lines: Vec<&str> = text.lines().filter(|l| l.starts_with("  closing-")).collect();
+    assert_eq!(lines.len(), 2, "{text}");
 }

@@ -142,7 +142,16 @@ fn a_50_ms_dropout_is_bridged_and_a_2_s_one_lets_go() {
     let short = mid_closing(0.05);
     let out = replay_glitched(&edit(short, |_, g| g.clear()), short, NEVER);
     assert_held("50 ms dropout", &out);
-    assert_eq!(out.ended_in_glitch, 0, "a bridged dropout ended a contact");
+    // A closed fist's contacts come and go as its fingers shift on the box;
+    // the bridged dropout must not end more of them than the clean
+    // recording does over the same 50 ms.
+    let clean = replay_glitched(&frames(), short, NEVER);
+    assert!(
+        out.ended_in_glitch <= clean.ended_in_glitch,
+        "a bridged dropout ended {} contacts, the clean recording {}",
+        out.ended_in_glitch,
+        clean.ended_in_glitch
+    );
 
     // From mid-closing on, 2 s of nothing; the hand comes back for the
     // last 0.4 s of the recording.

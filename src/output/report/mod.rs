@@ -245,7 +245,7 @@ pub struct ObjectSeries {
     pub height_m: Vec<f32>,
 }
 
-/// One recording replayed with an object at its first grasp.
+/// One recording replayed with an object at every closing of its hands.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ReplayRun {
     /// The recording's file.
@@ -260,7 +260,7 @@ pub struct ReplayRun {
     pub duration_s: f64,
     /// Physics steps run.
     pub steps: usize,
-    /// The object put at the first grasp and where, or why there is none.
+    /// The objects put at the closings, or why there are none.
     pub placed: String,
     /// Contacts begun.
     pub contacts_begun: usize,
@@ -272,7 +272,7 @@ pub struct ReplayRun {
     pub glitches: usize,
     /// Why the replay stopped, if it did not finish.
     pub error: Option<String>,
-    /// Verdicts per closing of the hand; empty until replays have them.
+    /// Verdicts per closing of the hand (two each: held, released).
     pub verdicts: Vec<Verdict>,
 }
 

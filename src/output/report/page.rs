@@ -478,7 +478,7 @@ fn replays(p: &mut String, runs: &Vec<ReplayRun>) {
                 "duration (s), physics steps".into(),
                 format!("{}, {}", num(r.duration_s, 2), r.steps),
             ],
-            vec!["object at the first grasp".into(), escape(&r.placed)],
+            vec!["objects at the closings".into(), escape(&r.placed)],
             vec!["contacts begun".into(), r.contacts_begun.to_string()],
         ];
         for o in &r.objects {
@@ -491,10 +491,7 @@ fn replays(p: &mut String, runs: &Vec<ReplayRun>) {
         rows.push(vec!["tracking glitches left out".into(), r.glitches.to_string()]);
         table(p, &[], &rows);
         if r.verdicts.is_empty() {
-            p.push_str(
-                "<p class=\"note\">Verdicts per closing of the hand: not computed yet (replay \
-                 verdicts are a later issue).</p>\n",
-            );
+            p.push_str("<p class=\"note\">No hand closes in this recording.</p>\n");
         } else {
             p.push_str("<p>Verdicts per closing of the hand:</p>\n");
             verdicts(p, &r.verdicts);

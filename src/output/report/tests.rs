@@ -131,7 +131,7 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     assert!(page.contains("tower &lt;&amp;&gt;") && !page.contains("tower <&>"));
     assert!(page.contains("A &lt;b&gt;test&lt;/b&gt; &amp; more"));
     assert!(page.contains("Showing 5 of 12 objects"));
-    assert!(page.contains("pinch.json.lz") && page.contains("not computed yet"));
+    assert!(page.contains("pinch.json.lz") && page.contains("No hand closes"));
     assert!(page.contains("lifted (m)") && page.contains("&gt;= 0.18"));
     assert!(page.contains("--out &#39;a b&#39;"));
     assert_self_contained(&page);

@@ -1,0 +1,245 @@
+//! Verdicts for every closing of a recorded hand. An object appears where
+//! each closing grasps ([`super::grasp::find_grasps`]), held by a fixture
+//! until the hand grips it; then the replay judges, from physics alone,
+//! whether the closed hand held it, when and how far it slipped, and
+//! whether the hand let it go once it opened.
+
+use super::RunError;
+use super::drive::{Observer, StepView};
+use super::grasp::{GraspSite, find_grasps};
+use super::replay::{GraspObject, is_gripped, is_squeezed};
+use crate::input::playback::Playback;
+use crate::pipeline::{InteractionWorld, WorldError};
+use crate::scene::ObjectId;
+use glam::{Quat, Vec3};
+
+/// How long after a hand opens its object must have stopped being gripped
+/// (s), unless the hand closes again sooner. A hand opens in a few tenths
+/// of a second; in this time an object let go falls 1.2 m.
+pub const RELEASE_WINDOW: f64 = 0.5;
+
+/// Where an object's verdict begins: the closings are found every 5 ms of
+/// the recording.
+const SAMPLE_STEP: f64 = 0.005;
+
+/// What happened to the object at one closing of a hand.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ClosingVerdict {
+    /// The object's name in the world: `closing-1`, `closing-2` …
+    pub object: String,
+    /// The tracker's id of the closing hand.
+    pub hand: i64,
+    /// When the hand became three quarters closed, was most closed, began
+    /// to open ([`GraspSite::opening_at`]), and opened past three quarters
+    /// again (s).
+    pub closing_at: f64,
+    /// See `closing_at` (s).
+    pub closed_at: f64,
+    /// See `closing_at` (s).
+    pub opening_at: f64,
+    /// See `closing_at` (s).
+    pub open_at: f64,
+    /// Where the object appeared (m), at `appeared_at` (s): the hand's most
+    /// open instant before this closing.
+    pub site: [f32; 3],
+    /// See `site` (s).
+    pub appeared_at: f64,
+    /// When the fixture let the object go because the hand gripped it
+    /// ([`is_gripped`]), or `None` if the hand had not gripped it by its
+    /// most closed instant, when the fixture let go anyway.
+    pub gripped_at: Option<f64>,
+    /// The largest distance the object moved in the palm's frame while
+    /// the hand stayed closed, from where the fixture let it go to
+    /// `opening_at` (m).
+    pub drift: f32,
+    /// The drift that is a slip: the closing hand's finger width (twice
+    /// its index fingertip's radius, m). An object that moved farther
+    /// than that against the palm is no longer under the pads that held
+    /// it.
+    pub slip_bound: f32,
+    /// When the drift first exceeded `slip_bound` (s), if it did.
+    pub slipped_at: Option<f64>,
+    /// Whether the hand let the object go after opening: from some instant
+    /// after `opening_at`, and within [`RELEASE_WINDOW`] of `open_at` (or
+    /// before the hand's next closing begins), no hand squeezed it any more
+    /// ([`is_squeezed`]). `None` when the recording ends before that window
+    /// does with the object still gripped.
+    pub released: Option<bool>,
+    /// From when the object stayed let go (s), if it was.
+    pub released_at: Option<f64>,
+    /// The object's largest speed from `opening_at` to the window's end
+    /// (m/s).
+    pub speed_after_open: f32,
+}
+
+impl ClosingVerdict {
+    /// Held: the object stayed under the pads while the hand was closed.
+    pub fn held(&self) -> bool {
+        self.slipped_at.is_none()
+    }
+}
+
+impl std::fmt::Display for ClosingVerdict {
+    /// One line, e.g. `closing-1 (hand 31, closed 1.02-2.06 s): held, drift
+    /// 7.3 mm (a slip is 18.7); released at 2.06 s`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} (hand {}, closed {:.2}-{:.2} s): ",
+            self.object, self.hand, self.closing_at, self.opening_at
+        )?;
+        let (drift, bound) = (self.drift * 1e3, self.slip_bound * 1e3);
+        match self.slipped_at {
+            None => write!(f, "held, drift {drift:.1} mm (a slip is {bound:.1})")?,
+            Some(t) => write!(f, "slipped at {t:.2} s, {drift:.1} mm (a slip is {bound:.1})")?,
+        }
+        match (self.released, self.released_at) {
+            (Some(true), Some(t)) => write!(f, "; released at {t:.2} s"),
+            (Some(false), _) => write!(f, "; NOT released after opening"),
+            _ => write!(f, "; still closed when the recording ends"),
+        }
+    }
+}
+
+/// One closing being judged.
+#[derive(Debug, Clone)]
+struct Judged {
+    site: GraspSite,
+    verdict: ClosingVerdict,
+    id: Option<ObjectId>,
+    /// Still held by its fixture.
+    fixed: bool,
+    /// The object in the palm frame when the fixture let go.
+    reference: Option<Vec3>,
+    /// The end of the release window (s).
+    window_end: f64,
+}
+
+/// The [`Observer`] that puts an object at every closing of a recording's
+/// hands and judges each ([`ClosingVerdict`]). The hands must be driven in
+/// track order, as [`super::replay::replay`] does.
+#[derive(Debug, Clone)]
+pub struct Closings {
+    object: GraspObject,
+    judged: Vec<Judged>,
+    /// The recording's end (s).
+    end: f64,
+}
+
+impl Closings {
+    /// The closings of `playback`, each to get an `object`; an object that
+    /// could not be added is an error now, before any step.
+    pub fn new(playback: &Playback, object: GraspObject) -> Result<Closings, WorldError> {
+        let origin =
+            GraspSite { point: Vec3::ZERO, rotation: Quat::IDENTITY, ..Default::default() };
+        object.at(&origin, "closing-1").validate()?;
+        let sites = find_grasps(playback, SAMPLE_STEP);
+        let judged = sites
+            .iter()
+            .enumerate()
+            .map(|(k, site)| {
+                let next = sites[k + 1..].iter().find(|s| s.track == site.track);
+                let window_end = (site.open_at + RELEASE_WINDOW)
+                    .min(next.map_or(f64::INFINITY, |n| n.widest_before));
+                let finger = playback.sample(site.track, site.closed_at);
+                let slip_bound = finger.map_or(0.0, |h| 2.0 * h.pose.fingers[1][2].radius);
+                Judged {
+                    site: *site,
+                    verdict: ClosingVerdict {
+                        object: format!("closing-{}", k + 1),
+                        hand: playback.tracks[site.track].id,
+                        closing_at: site.closing_at,
+                        closed_at: site.closed_at,
+                        opening_at: site.opening_at,
+                        open_at: site.open_at,
+                        site: site.point.to_array(),
+                        appeared_at: site.widest_before,
+                        gripped_at: None,
+                        drift: 0.0,
+                        slip_bound,
+                        slipped_at: None,
+                        released: None,
+                        released_at: None,
+                        speed_after_open: 0.0,
+                    },
+                    id: None,
+                    fixed: true,
+                    reference: None,
+                    window_end,
+                }
+            })
+            .collect();
+        Ok(Closings { object, judged, end: playback.duration })
+    }
+
+    /// The verdicts so far, in the closings' time order.
+    pub fn verdicts(&self) -> Vec<ClosingVerdict> {
+        self.judged.iter().map(|j| j.verdict.clone()).collect()
+    }
+}
+
+impl Observer for Closings {
+    /// Adds each object at its site when its time comes, and lets each
+    /// fixture go when the hand grips the object or at the most closed
+    /// instant (re-seating the contacts then, as [`super::replay::Fixtures`]
+    /// does).
+    fn before_step(&mut self, world: &mut InteractionWorld, t: f64) -> Result<(), RunError> {
+        for k in 0..self.judged.len() {
+            let j = &self.judged[k];
+            if j.id.is_none() && j.verdict.appeared_at <= t {
+                let id = world.add_object(&self.object.at(&j.site, &j.verdict.object))?;
+                world.set_object_locked(id, true)?;
+                self.judged[k].id = Some(id);
+            }
+            let j = &mut self.judged[k];
+            let Some(id) = j.id.filter(|_| j.fixed) else { continue };
+            let gripped = is_gripped(world, id);
+            if gripped || j.site.closed_at <= t {
+                world.set_object_locked(id, false)?;
+                if gripped {
+                    j.verdict.gripped_at = Some(t);
+                } else {
+                    world.reseat_contacts(id)?;
+                }
+                j.fixed = false;
+            }
+        }
+        Ok(())
+    }
+
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let t = step.t;
+        for j in &mut self.judged {
+            let Some(id) = j.id.filter(|_| !j.fixed) else { continue };
+            let state = step.world.object_state(id)?;
+            let v = &mut j.verdict;
+            if t <= j.site.opening_at {
+                let hand = step.hands.get(j.site.track).and_then(|h| h.sample.as_ref());
+                if let Some(hand) = hand {
+                    let local = hand.pose.palm.to_local(state.position);
+                    let reference = *j.reference.get_or_insert(local);
+                    v.drift = v.drift.max(local.distance(reference));
+                    if v.drift > v.slip_bound && v.slipped_at.is_none() {
+                        v.slipped_at = Some(t);
+                    }
+                }
+            } else if v.released.is_none() {
+                if t <= j.window_end {
+                    v.speed_after_open = v.speed_after_open.max(state.linvel.length());
+                    if is_squeezed(step.world, id) {
+                        v.released_at = None;
+                    } else {
+                        v.released_at.get_or_insert(t);
+                    }
+                }
+                let next = t + f64::from(step.world.config().dt);
+                if next > j.window_end {
+                    v.released = Some(v.released_at.is_some());
+                } else if next > self.end && v.released_at.is_some() {
+                    v.released = Some(true);
+                }
+            }
+        }
+        Ok(())
+    }
+}
