@@ -17,6 +17,7 @@ mod push;
 mod recordings;
 mod safety;
 mod scenarios;
+mod throw;
 mod tilt;
 mod tracking;
 

@@ -148,6 +148,50 @@ pub enum Measure {
         /// Time (s).
         at: f32,
     },
+    /// The object's speed at its release (m/s): its state after the last
+    /// step in [`from`, `to`] in which a hand contact pressed on it (as
+    /// `contacts` counts them), when the last force from a hand acted. With
+    /// no pressing contact in the window, or one still pressing at its end,
+    /// it was not released: the value is not a number and the check fails.
+    ReleaseSpeed {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+    },
+    /// How far from the prediction the released object lands (m): the
+    /// distance between where its centre first comes down to `height`
+    /// after the release (as `release_speed`) and where ballistic flight
+    /// from its release position and velocity, under the config's gravity,
+    /// comes down to the same height. Not released, or not landed by the
+    /// end of the run: not a number, and the check fails.
+    LandingError {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s) of the window in which it is released.
+        from: f32,
+        /// End time (s) of that window; `None` is the end of the run.
+        to: Option<f32>,
+        /// Height (world y, m) of its centre when it lands: the ground's
+        /// height plus, e.g., a ball's radius.
+        height: f32,
+    },
+    /// Horizontal (x–z) distance from `target` ([x, z], m) of where the
+    /// released object lands, as for `landing_error` (m).
+    LandingDistance {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s) of the window in which it is released.
+        from: f32,
+        /// End time (s) of that window; `None` is the end of the run.
+        to: Option<f32>,
+        /// Height (world y, m) of its centre when it lands.
+        height: f32,
+        /// The target, `[x, z]` (world, m).
+        target: [f32; 2],
+    },
 }
 
 /// What a run recorded, step by step, for the checks.
@@ -159,20 +203,23 @@ pub struct History {
     pub names: Vec<String>,
     /// `poses[step][object]` after that step.
     pub poses: Vec<Vec<(Vec3, Quat)>>,
-    /// `speeds[step][object]`: speed after that step (m/s).
-    pub speeds: Vec<Vec<f32>>,
+    /// `velocities[step][object]`: linear velocity after that step (m/s).
+    pub velocities: Vec<Vec<Vec3>>,
     /// `contacts[step][object]`: hand contacts pressing on it (normal force
     /// > 0) after that step.
     pub contacts: Vec<Vec<u32>>,
     /// `palms[step][hand]`: palm centre and rotation, if tracked.
     pub palms: Vec<Vec<Option<(Vec3, Quat)>>>,
+    /// The world's gravity (m/s²), for ballistic predictions.
+    pub gravity: Vec3,
 }
 
 impl History {
     /// An empty history of `world`'s objects.
     pub fn new(world: &InteractionWorld) -> History {
         let names = world.object_ids().map(|id| world.object_name(id).unwrap_or("").to_string());
-        History { dt: world.config().dt, names: names.collect(), ..History::default() }
+        let (dt, gravity) = (world.config().dt, world.config().gravity);
+        History { dt, gravity, names: names.collect(), ..History::default() }
     }
 
     /// The step whose state is the one at time `t` (clamped to the run).
@@ -184,7 +231,7 @@ impl History {
         self.poses.len() as f32 * self.dt
     }
 
-    fn steps(&self, from: f32, to: Option<f32>) -> std::ops::RangeInclusive<usize> {
+    pub(super) fn steps(&self, from: f32, to: Option<f32>) -> std::ops::RangeInclusive<usize> {
         self.step(from)..=self.step(to.unwrap_or(self.end()))
     }
 }
@@ -209,6 +256,14 @@ pub enum CheckError {
     /// A path of fewer than two finite points.
     #[error("measure.path: needs at least two finite [x, z] points")]
     Path,
+    /// A landing height or target that is not finite.
+    #[error("measure.{field}: must be finite, got {value}")]
+    NotFinite {
+        /// `height` or `target`.
+        field: &'static str,
+        /// The first value that is not.
+        value: f32,
+    },
 }
 
 /// The outcome of one check.
@@ -236,7 +291,10 @@ impl Check {
             | Measure::Tilt { object, .. }
             | Measure::Speed { object, .. }
             | Measure::PathDeviation { object, .. }
-            | Measure::Contacts { object, .. } => (vec![object.as_str()], None),
+            | Measure::Contacts { object, .. }
+            | Measure::ReleaseSpeed { object, .. }
+            | Measure::LandingError { object, .. }
+            | Measure::LandingDistance { object, .. } => (vec![object.as_str()], None),
             Measure::DriftInHand { object, hand, .. }
             | Measure::TurnInHand { object, hand, .. } => (vec![object.as_str()], Some(*hand)),
             Measure::GroupDisplacement { except, .. } => {
@@ -245,8 +303,9 @@ impl Check {
         }
     }
 
-    /// Checks what can be checked without a run: a bound, finite numbers,
-    /// unit axes, a path of at least two points.
+    /// Checks what can be checked without a run: a bound, finite numbers
+    /// (bounds, landing heights and targets), unit axes, a path of at least
+    /// two points.
     pub(crate) fn validate(&self) -> Result<(), CheckError> {
         if self.min.is_none() && self.max.is_none() {
             return Err(CheckError::NoBound);
@@ -255,6 +314,16 @@ impl Check {
             if let Some(value) = value.filter(|v| !v.is_finite()) {
                 return Err(CheckError::BoundNotFinite { bound, value });
             }
+        }
+        let landing = match &self.measure {
+            Measure::LandingError { height, .. } => vec![("height", *height)],
+            Measure::LandingDistance { height, target, .. } => {
+                vec![("height", *height), ("target", target[0]), ("target", target[1])]
+            }
+            _ => vec![],
+        };
+        if let Some((field, value)) = landing.into_iter().find(|(_, v)| !v.is_finite()) {
+            return Err(CheckError::NotFinite { field, value });
         }
         let axis = match &self.measure {
             Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
@@ -339,7 +408,7 @@ impl Check {
             Measure::Tilt { object, at } => {
                 (pose(index(object), *at).1 * Vec3::Y).angle_between(Vec3::Y).to_degrees()
             }
-            Measure::Speed { object, at } => h.speeds[h.step(*at)][index(object)],
+            Measure::Speed { object, at } => h.velocities[h.step(*at)][index(object)].length(),
             Measure::GroupDisplacement { prefix, except, from, to } => {
                 let (a, b) = (h.step(*from), h.step(to.unwrap_or(h.end())));
                 h.names
@@ -356,6 +425,18 @@ impl Check {
                     .fold(0.0, f32::max)
             }
             Measure::Contacts { object, at } => h.contacts[h.step(*at)][index(object)] as f32,
+            Measure::ReleaseSpeed { object, from, to } => {
+                let o = index(object);
+                h.release(o, *from, *to).map_or(f32::NAN, |s| h.velocities[s][o].length())
+            }
+            Measure::LandingError { object, from, to, height } => h
+                .landed_and_predicted(index(object), (*from, *to), *height)
+                .map_or(f32::NAN, |(landed, predicted)| landed.distance(predicted)),
+            Measure::LandingDistance { object, from, to, height, target } => h
+                .landed_and_predicted(index(object), (*from, *to), *height)
+                .map_or(f32::NAN, |(landed, _)| {
+                    glam::Vec2::new(landed.x, landed.z).distance(glam::Vec2::from(*target))
+                }),
         };
         self.result(value)
     }
@@ -384,11 +465,11 @@ impl Observer for History {
         let world = step.world;
         let objects = world.object_count();
         let mut poses = Vec::with_capacity(objects);
-        let mut speeds = Vec::with_capacity(objects);
+        let mut velocities = Vec::with_capacity(objects);
         for id in world.object_ids() {
             let s = world.object_state(id)?;
             poses.push((s.position, s.rotation));
-            speeds.push(s.linvel.length());
+            velocities.push(s.linvel);
         }
         let mut contacts = vec![0u32; objects];
         for c in world.contacts().iter().filter(|c| c.normal_force > 0.0) {
@@ -398,7 +479,7 @@ impl Observer for History {
             h.sample.as_ref().map(|s| (s.pose.palm.center, s.pose.palm.rotation))
         };
         self.poses.push(poses);
-        self.speeds.push(speeds);
+        self.velocities.push(velocities);
         self.contacts.push(contacts);
         self.palms.push(step.hands.iter().map(palm).collect());
         Ok(())
@@ -427,9 +508,10 @@ mod tests {
             dt: 0.5,
             names: vec!["box".into()],
             poses: positions.iter().zip(rotations).map(|(p, r)| vec![(*p, *r)]).collect(),
-            speeds: positions.iter().map(|_| vec![0.0]).collect(),
+            velocities: positions.iter().map(|_| vec![Vec3::ZERO]).collect(),
             contacts: positions.iter().map(|_| vec![0]).collect(),
             palms: positions.iter().map(|_| vec![Some((Vec3::ZERO, Quat::IDENTITY))]).collect(),
+            gravity: Vec3::new(0.0, -9.81, 0.0),
         }
     }
 
@@ -489,5 +571,15 @@ mod tests {
             axis: Some(Vec3::new(1.0, 1.0, 0.0)),
         };
         assert!(check(d, Some(0.0), None).validate().unwrap_err().to_string().contains("unit"));
+        let (object, to) = ("box".to_string(), None);
+        let far = Measure::LandingDistance {
+            object,
+            from: 0.0,
+            to,
+            height: 0.0,
+            target: [0.0, f32::NAN],
+        };
+        let e = check(far, None, Some(0.2)).validate().unwrap_err().to_string();
+        assert!(e.starts_with("measure.target"), "{e}");
     }
 }

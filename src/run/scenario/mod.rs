@@ -32,13 +32,17 @@
 //!   `{"recording": "path.json.lz", "offset": [x, y, z]}`, whose path is
 //!   relative to the scenario file.
 //! * `checks`: see [`check::Measure`] for what can be measured; `contacts`
-//!   counts only the hand contacts that press (normal force > 0).
+//!   counts only the hand contacts that press (normal force > 0), and an
+//!   object's release (`release_speed`, `landing_error`,
+//!   `landing_distance`, [`flight`]) is the last step such a contact
+//!   pressed on it.
 //!
 //! Unknown fields are errors; every name, bound and key is checked before
 //! the run starts. The shipped scenarios are in `scenarios/` and built into
 //! the binary ([`shipped`]).
 
 pub mod check;
+pub mod flight;
 pub mod script;
 
 use super::RunError;
@@ -80,6 +84,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
         "catch",
         "slide-slippery",
         "tilt-wooden",
+        "throw",
     ]
 }
 
