@@ -3,7 +3,10 @@
 //! square. It reaches over the cube, descends, closes its grip, lifts,
 //! carries, lowers until the cube rests, opens and withdraws, then looks:
 //! if the cube is farther from the target than the user's tolerance, it
-//! grips and moves it again (at most [`MAX_CORRECTIONS`] times).
+//! corrects (at most [`MAX_CORRECTIONS`] times): a cube nearly in place
+//! ([`NUDGE_BELOW`]) it nudges with its open hand's thumb, as the thesis's
+//! users pushed and slid the cube; one farther away it grips and moves
+//! again.
 //!
 //! It perceives only the cube's pose ([`Eyes`]), never contacts, forces or
 //! grabs, and drives every method the same way. Its tracked hand is what a
@@ -35,6 +38,11 @@ const HOVER: f32 = 0.06;
 const CARRY: f32 = 0.05;
 /// A cube this far below the grip's centre has left the hand (m).
 const DROPPED: f32 = 0.025;
+/// A cube nearer its target than this is nudged, not picked up again: by
+/// less than its half size it is nearly in place (m).
+const NUDGE_BELOW: f32 = CUBE_HALF;
+/// The longest a nudge pushes (s).
+const PUSH_FOR: f64 = 4.0;
 
 /// One user's own parameters, drawn per user.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -92,13 +100,23 @@ impl Observer for Eyes {
 enum Phase {
     Approach,
     Descend,
-    Close { since: f64 },
+    Close {
+        since: f64,
+    },
     Lift,
     Carry,
-    Lower { since: f64 },
+    Lower {
+        since: f64,
+    },
     Release,
+    /// Nudging the cube with the open hand's thumb towards the target.
+    Push {
+        since: f64,
+    },
     Withdraw,
-    Judge { since: f64 },
+    Judge {
+        since: f64,
+    },
     Done,
 }
 
@@ -125,6 +143,8 @@ pub struct User {
     rng: ChaCha8Rng,
     normal: Option<Normal<f32>>,
     corrections: usize,
+    /// This correction nudges the cube instead of picking it up.
+    nudge: bool,
     /// Drops while the cube was lifted or carried.
     pub drops: usize,
     /// When the user finished (s).
@@ -151,12 +171,20 @@ impl User {
             rng: ChaCha8Rng::seed_from_u64(seed),
             normal,
             corrections: 0,
+            nudge: false,
             drops: 0,
             done_at: None,
             last_t: 0.0,
         };
         user.jitter = (0, user.draw(), user.draw());
         user
+    }
+
+    /// This user's first move is a nudge, as a correction of a cube
+    /// nearly in place would be: it pushes instead of gripping.
+    pub fn nudging(mut self) -> User {
+        self.nudge = true;
+        self
     }
 
     /// Moves the intended grip towards `goal` at the user's speed, slowing
@@ -187,12 +215,22 @@ impl User {
             Phase::Approach => {
                 self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
                 let left = self.reach(cube + Vec3::Y * HOVER, 1.0, dt);
-                let turn = self.turn(grip_yaw(rotation, self.intent.yaw), dt);
+                // A nudge turns the thumb behind the cube, the fingers ahead.
+                let yaw = if self.nudge {
+                    (-to_target.z).atan2(to_target.x)
+                } else {
+                    grip_yaw(rotation, self.intent.yaw)
+                };
+                let turn = self.turn(yaw, dt);
                 if left < 0.002 && turn < 0.02 { Phase::Descend } else { Phase::Approach }
             }
             Phase::Descend => {
                 let left = self.reach(cube, 0.5, dt);
-                if left < 0.0015 { Phase::Close { since: t } } else { Phase::Descend }
+                match (left < 0.0015, self.nudge) {
+                    (false, _) => Phase::Descend,
+                    (true, false) => Phase::Close { since: t },
+                    (true, true) => Phase::Push { since: t },
+                }
             }
             Phase::Close { since } => {
                 self.intent.closure = (self.intent.closure + dt / 0.35).min(1.0);
@@ -219,6 +257,19 @@ impl User {
                 self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
                 if self.intent.closure == 0.0 { Phase::Withdraw } else { Phase::Release }
             }
+            Phase::Push { since } => {
+                // Closed loop on the cube: push while it is short of the
+                // target, keeping the hand's height.
+                let goal = self.intent.at + to_target;
+                self.reach(goal, 0.25, dt);
+                let there = to_target.length() < 0.5 * self.params.tolerance;
+                if there || t - since > PUSH_FOR {
+                    self.nudge = false;
+                    Phase::Withdraw
+                } else {
+                    Phase::Push { since }
+                }
+            }
             Phase::Withdraw => {
                 let goal = Vec3::new(self.intent.at.x, cube.y + HOVER, self.intent.at.z);
                 if self.reach(goal, 0.5, dt) < 0.002 {
@@ -236,6 +287,7 @@ impl User {
                     Phase::Done
                 } else {
                     self.corrections += 1;
+                    self.nudge = to_target.length() < NUDGE_BELOW;
                     Phase::Approach
                 }
             }
