@@ -18,6 +18,7 @@ mod recordings;
 mod safety;
 mod scenarios;
 mod tilt;
+mod trackers;
 mod tracking;
 
 use coulomb_hands::hand::rig::HandRig;
