@@ -2,7 +2,8 @@
 //! OpenXR layout, metres, y up; `coulomb_hands::input::joints`):
 //!
 //! ```text
-//! cargo run --example leap_to_joints -- data/leap/pinch-57fps.json.lz data/joints/pinch-57fps.jsonl
+//! cargo run --example leap_to_joints -- \
+//!     data/leap/pinch-57fps.json.lz data/joints/pinch-57fps.jsonl
 //! ```
 //!
 //! The device's origin becomes the joint recording's origin, so replaying

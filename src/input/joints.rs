@@ -407,11 +407,13 @@ pub fn openxr_line(t: f64, hands: &[TrackedHand]) -> String {
         .iter()
         .map(|hand| {
             let joints = layouts::to_openxr(hand);
+            let positions: Vec<_> =
+                joints.iter().map(|j| j.position.to_array().map(round)).collect();
             let mut o = json!({
                 "id": hand.id,
                 "side": if hand.side == Side::Left { "left" } else { "right" },
                 "layout": "openxr",
-                "joints": joints.iter().map(|j| j.position.to_array().map(round)).collect::<Vec<_>>(),
+                "joints": positions,
                 "radii": joints.iter().map(|j| round(j.radius)).collect::<Vec<_>>(),
                 "orientations":
                     joints.iter().map(|j| j.orientation.to_array().map(round)).collect::<Vec<_>>(),

@@ -71,6 +71,20 @@ pub struct GraspObject {
     pub mass: f32,
 }
 
+impl GraspObject {
+    /// The object, named `name`, centred at `at` (m): wood, as
+    /// [`ObjectDesc::cuboid`] makes it.
+    pub fn desc(&self, name: &str, at: Vec3) -> ObjectDesc {
+        let half = 0.5 * self.size;
+        let shape = if self.sphere {
+            ShapeDesc::Sphere { radius: half }
+        } else {
+            ShapeDesc::Box { half_extents: Vec3::splat(half) }
+        };
+        ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, at) }
+    }
+}
+
 /// Why a `SHAPE:SIZE_M:MASS_KG` text is not a [`GraspObject`].
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GraspObjectError {
@@ -136,14 +150,7 @@ pub fn place_at_grasp(
     let grasps = find_grasps(playback, 0.005);
     let site =
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
-    let half = 0.5 * object.size;
-    let shape = if object.sphere {
-        ShapeDesc::Sphere { radius: half }
-    } else {
-        ShapeDesc::Box { half_extents: Vec3::splat(half) }
-    };
-    let cube = ObjectDesc::cuboid("grasped", Vec3::splat(object.size), object.mass, site.point);
-    let id = world.add_object(&ObjectDesc { shape, ..cube })?;
+    let id = world.add_object(&object.desc("grasped", site.point))?;
     world.set_object_locked(id, true)?;
     Ok((Fixture { object: id, release_by: site.closed_at }, site))
 }

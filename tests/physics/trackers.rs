@@ -78,10 +78,11 @@ fn a_joint_recording_replays_the_same_hand_as_its_leap_original() {
 #[test]
 fn a_scenario_hand_reads_a_joint_recording() {
     let text = r#"{"name": "j", "description": "a joint recording", "duration": 0.01,
-        "scene": {"objects": [{"name": "cube", "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}},
-                               "mass": 0.05, "material": "wood", "position": [1.0, 0.02, 0.0]}]},
+        "scene": {"objects": [{"name": "cube", "mass": 0.05, "material": "wood",
+            "shape": {"Box": {"half_extents": [0.02, 0.02, 0.02]}}, "position": [1, 0.02, 0]}]},
         "hands": [{"recording": "../data/joints/pinch-57fps.jsonl", "offset": [0, 0.1, 0]}],
-        "checks": [{"name": "h", "measure": {"kind": "height", "object": "cube", "at": 0.01}, "min": 0}]}"#;
+        "checks": [{"name": "h", "min": 0,
+                    "measure": {"kind": "height", "object": "cube", "at": 0.01}}]}"#;
     let s = Scenario::parse("j.json", text, &repo("scenarios")).unwrap_or_else(|e| panic!("{e}"));
     let ScenarioHand::Recording { playback, track } = &s.hands[0] else { panic!("not recorded") };
     let leap = recording::load(&repo(LEAP)).unwrap();
