@@ -15,7 +15,8 @@
 //! * `t`: the frame's time in seconds (≥ 0, increasing; a stale frame is
 //!   left out by playback, as for any tracker).
 //! * `hands`: zero or more hands. Each has
-//!   * `side`: `"left"` or `"right"`;
+//!   * `side`: `"left"` or `"right"`, the subject's own hand (MediaPipe
+//!     labels may be mirrored: [`super::mediapipe::Label`]);
 //!   * `layout`: `"openxr"` (`XR_EXT_hand_tracking`, 26 joints in
 //!     `XrHandJointEXT` order, palm first), `"webxr"` (WebXR Hand Input, 25
 //!     in `XRHandJoint` order, wrist first) or `"mediapipe"` (MediaPipe
