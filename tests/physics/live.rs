@@ -215,6 +215,16 @@ fn live_binary(frames: usize, args: &[&str]) -> serde_json::Value {
     serde_json::from_str(&stdout).unwrap_or_else(|e| panic!("{e}: {stdout}"))
 }
 
+/// The index fingertip's bone half-way through the first `frames` frames
+/// of the real pinch, the device at the origin.
+fn midway_index_tip(frames: usize) -> coulomb_hands::Capsule {
+    let recorded = leap::load(&pinch_path()).unwrap();
+    let conversion = Conversion::leap_desktop(Vec3::ZERO);
+    let playback =
+        Playback::new("pinch", &recorded.frames[..frames], &conversion, DEFAULT_GRACE).unwrap();
+    playback.sample(0, 0.5 * playback.duration).unwrap().pose.fingers[1][2]
+}
+
 #[test]
 fn live_with_a_scene_pushes_its_object_and_records_a_session_that_replays_it() {
     // A weightless 3 cm, 50 g cube where the index fingertip is half-way
@@ -225,10 +235,7 @@ fn live_with_a_scene_pushes_its_object_and_records_a_session_that_replays_it() {
     // 4 N here) throws a free 50 g cube off at 80 m/s². So the cube must
     // move at least half a side + r − 0.2·d.
     let frames = 200;
-    let recorded = leap::load(&pinch_path()).unwrap();
-    let conversion = Conversion::leap_desktop(Vec3::ZERO);
-    let playback = Playback::new("pinch", &recorded.frames[..frames], &conversion, 0.1).unwrap();
-    let tip = playback.sample(0, 0.5 * playback.duration).unwrap().pose.fingers[1][2];
+    let tip = midway_index_tip(frames);
     let side = 0.03f32;
     let dir = std::env::temp_dir().join(format!("coulomb-hands-live-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -262,15 +269,11 @@ fn live_with_a_scene_pushes_its_object_and_records_a_session_that_replays_it() {
 
 #[test]
 fn live_object_at_puts_a_box_where_the_hand_passes() {
-    // The default object: a 4 cm, 50 g wooden box, here resting on the
-    // ground under the index fingertip's lowest point; the same hand, let
-    // down by the device's height so that its fingertip sweeps through
-    // the box, moves it.
+    // The default object: a 4 cm, 50 g wooden box, resting on the ground;
+    // the device is lowered so that the index fingertip's half-way point
+    // is the box's centre, and the hand, sweeping through it, moves it.
     let frames = 200;
-    let recorded = leap::load(&pinch_path()).unwrap();
-    let conversion = Conversion::leap_desktop(Vec3::ZERO);
-    let playback = Playback::new("pinch", &recorded.frames[..frames], &conversion, 0.1).unwrap();
-    let tip = playback.sample(0, 0.5 * playback.duration).unwrap().pose.fingers[1][2].b;
+    let tip = midway_index_tip(frames).b;
     // The device sits so that this tip is 2 cm up: the box's centre height.
     let device = Vec3::new(0.0, 0.02 - tip.y, 0.0);
     let at = Vec3::new(tip.x, 0.02, tip.z);
