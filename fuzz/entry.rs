@@ -5,9 +5,9 @@
 //! whatever parses must hold only finite numbers.
 
 use coulomb_hands::input::convert::Conversion;
-use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
+use coulomb_hands::input::playback::DEFAULT_GRACE;
 use coulomb_hands::input::skeleton::hand_pose;
-use coulomb_hands::input::{TrackingFrame, leap, live};
+use coulomb_hands::input::{TrackingFrame, live, mediapipe, recording};
 use coulomb_hands::output::session::Session;
 use coulomb_hands::pipeline::Call;
 use coulomb_hands::run::scenario::Scenario;
@@ -18,9 +18,11 @@ use glam::Vec3;
 use std::path::{Path, PathBuf};
 
 /// Every target, as named in `fuzz/Cargo.toml` and under `fuzz/corpus/`.
-pub const TARGETS: [&str; 10] = [
+pub const TARGETS: [&str; 12] = [
     "leap_json",
     "leap_lz",
+    "joints",
+    "mediapipe_pbtxt",
     "live_frame",
     "session",
     "scene",
@@ -40,6 +42,8 @@ pub fn run(target: &str, data: &[u8]) {
     match target {
         "leap_json" => leap_recording("fuzz.json", data),
         "leap_lz" => leap_recording("fuzz.json.lz", data),
+        "joints" => leap_recording("fuzz.jsonl", data),
+        "mediapipe_pbtxt" => mediapipe_frame(data),
         "live_frame" => live_frame(data),
         "session" => session(data),
         "scene" => scene(data),
@@ -88,11 +92,9 @@ fn check_frame(frame: &TrackingFrame) {
 /// commands do: every hand posed, and sampled across the recording.
 fn leap_recording(name: &str, data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else { return };
-    let Ok(recording) = leap::parse(name, text) else { return };
+    let Ok(recording) = recording::parse(name, text, name.ends_with(".jsonl")) else { return };
     recording.frames.iter().for_each(check_frame);
-    let conversion = Conversion::leap_desktop(Vec3::ZERO);
-    let frames = &recording.frames;
-    let Ok(playback) = Playback::new(name, frames, &conversion, DEFAULT_GRACE) else { return };
+    let Ok(playback) = recording.playback(Vec3::ZERO, DEFAULT_GRACE) else { return };
     assert!(playback.duration.is_finite() && playback.duration >= 0.0, "{}", playback.duration);
     for k in 0..playback.tracks.len() {
         for i in 0..=8 {
@@ -100,6 +102,19 @@ fn leap_recording(name: &str, data: &[u8]) {
             if let Some(sample) = playback.sample(k, t) {
                 finite_pose(&sample.pose);
             }
+        }
+    }
+}
+
+/// A MediaPipe hand landmarker result (pbtxt), read and posed both ways
+/// its label can be meant.
+fn mediapipe_frame(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    let Ok(frame) = mediapipe::parse("fuzz.pbtxt", text) else { return };
+    for label in [mediapipe::Label::Subject, mediapipe::Label::Mirrored] {
+        let Ok(hand) = frame.tracked_hand("fuzz.pbtxt", 0, label) else { return };
+        if let Ok(pose) = hand_pose(&hand, &Conversion::identity()) {
+            finite_pose(&pose);
         }
     }
 }

@@ -82,6 +82,32 @@ enum Command {
         /// Where the desktop device sits in the world, "x,y,z" in metres.
         #[arg(long, default_value = "0,0,0", value_parser = parse_vec3)]
         device: glam::Vec3,
+        /// Tracking gaps up to this long (s) are bridged; longer ones release the hand.
+        #[arg(long, default_value_t = coulomb_hands::input::playback::DEFAULT_GRACE,
+              value_parser = at_least_zero)]
+        grace: f64,
+        /// Add the static scenery and objects of this scene file (JSON; see the
+        /// `scene` module docs).
+        #[arg(long)]
+        scene: Option<std::path::PathBuf>,
+        /// Put an object (see --object) with its centre here, "x,y,z" in metres.
+        #[arg(long, value_parser = parse_vec3)]
+        object_at: Option<glam::Vec3>,
+        /// The --object-at object: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere, wood.
+        #[arg(
+            long,
+            value_name = "SHAPE:SIZE_M:MASS_KG",
+            default_value = "box:0.04:0.05",
+            requires = "object_at"
+        )]
+        object: coulomb_hands::run::replay::GraspObject,
+        /// Record the whole session (scene, poses, steps) to this file; replaying
+        /// that file reproduces the run bit for bit.
+        #[arg(long)]
+        record: Option<std::path::PathBuf>,
+        /// Print one JSON object instead of the summary.
+        #[arg(long)]
+        json: bool,
     },
     /// Run a scenario of the interaction catalogue and print its checks.
     Scenario {
@@ -221,8 +247,18 @@ fn main() -> ExitCode {
                 Err(e) => Err(e.to_string()),
             }
         }
-        Command::Live { url, seconds, device } => {
-            cli::live::live(&url, seconds, device).map_err(|e| e.to_string())
+        Command::Live { url, seconds, device, grace, scene, object_at, object, record, json } => {
+            cli::live::live(cli::live::LiveArgs {
+                url: &url,
+                seconds,
+                device,
+                grace,
+                scene: scene.as_deref(),
+                object: object_at.map(|at| (object, at)),
+                record: record.as_deref(),
+                json,
+            })
+            .map_err(|e| e.to_string())
         }
         Command::Replay {
             file,

@@ -19,7 +19,6 @@ pub struct ReplayArgs<'a> {
 
 /// `replay`: one replay, a session's replay, or a soak.
 pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
-    use coulomb_hands::input::{convert::Conversion, leap, playback::Playback};
     use coulomb_hands::output::Session;
     use coulomb_hands::run::observe::TraceWriter;
     use coulomb_hands::run::replay::{place_at_grasp, replay, replay_closings, replay_world};
@@ -32,9 +31,8 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
         }
         return Ok(replay_session(file, json)?);
     }
-    let recording = leap::load(file)?;
-    let conversion = Conversion::leap_desktop(device);
-    let playback = Playback::new(&recording.source_name, &recording.frames, &conversion, grace)?;
+    let recording = coulomb_hands::input::recording::load(file)?;
+    let playback = recording.playback(device, grace)?;
     let mut config = method.config(InteractionConfig { gamma, ..InteractionConfig::default() });
     if let Some(scene) = &scene {
         config = config.with_scene(scene);
@@ -79,7 +77,7 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
         println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
         return Ok(());
     }
-    println!("replayed {} (format {})", summary.source, recording.format_version);
+    println!("replayed {} (format {})", summary.source, recording.format);
     println!(
         "frames: {}, hands: {}, duration: {:.2} s, physics steps: {}",
         summary.frames, summary.hands, summary.duration, summary.steps

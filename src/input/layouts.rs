@@ -178,6 +178,16 @@ fn tracked(
     }
 }
 
+/// The palm joint's orientation for OpenXR joint positions (all 26, in
+/// `XrHandJointEXT` order) given without orientations: from the wrist and
+/// the knuckles, as for WebXR.
+pub fn palm_orientation(side: Side, positions: &[Vec3]) -> Quat {
+    let position = |i: usize| positions.get(i).copied().unwrap_or(Vec3::ZERO);
+    let fingers = finger_joints(position, openxr::THUMB_METACARPAL, openxr::INDEX_METACARPAL);
+    let (_, normal, direction) = palm_from_knuckles(side, position(openxr::WRIST), &fingers);
+    frame(normal, direction)
+}
+
 /// OpenXR `XR_EXT_hand_tracking` joints (all 26, in `XrHandJointEXT`
 /// order) to a tracked hand in metres.
 pub fn from_openxr(

@@ -45,9 +45,7 @@ fn err(
 
 /// Reads a `.json.lz` or `.json` recording from disk.
 pub fn load(path: &Path) -> Result<LeapRecording, InputError> {
-    let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| err(&name, None, "file", e.to_string()))?;
-    let text = String::from_utf8(bytes).map_err(|_| err(&name, None, "file", "not UTF-8 text"))?;
+    let (name, text) = super::read_text(path)?;
     parse(&name, &text)
 }
 

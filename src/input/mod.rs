@@ -5,10 +5,13 @@
 //! world (metres, y up); [`skeleton::hand_pose`] builds the 16-bone model.
 
 pub mod convert;
+pub mod joints;
 pub mod layouts;
 pub mod leap;
 pub mod live;
+pub mod mediapipe;
 pub mod playback;
+pub mod recording;
 pub mod skeleton;
 
 use crate::hand::Side;
@@ -82,4 +85,19 @@ pub struct InputError {
     pub field: String,
     /// What is wrong with it.
     pub reason: String,
+}
+
+/// A recording file's name (for messages) and text; an unreadable or
+/// non-UTF-8 file is an error naming it.
+fn read_text(path: &std::path::Path) -> Result<(String, String), InputError> {
+    let name = path.display().to_string();
+    let fail = |reason: String| InputError {
+        source_name: name.clone(),
+        frame: None,
+        field: "file".into(),
+        reason,
+    };
+    let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
+    let text = String::from_utf8(bytes).map_err(|_| fail("not UTF-8 text".into()))?;
+    Ok((name, text))
 }

@@ -75,6 +75,26 @@ pub struct GraspObject {
     pub mass: f32,
 }
 
+impl GraspObject {
+    /// This object named `name`, sitting in the grasp at `site`
+    /// ([`GraspSite::rotation`]).
+    pub fn at(self, site: &GraspSite, name: &str) -> ObjectDesc {
+        ObjectDesc { rotation: site.rotation, ..self.desc(name, site.point) }
+    }
+
+    /// The object, named `name`, centred at `at` (m), unturned: wood, as
+    /// [`ObjectDesc::cuboid`] makes it.
+    pub fn desc(&self, name: &str, at: Vec3) -> ObjectDesc {
+        let half = 0.5 * self.size;
+        let shape = if self.sphere {
+            ShapeDesc::Sphere { radius: half }
+        } else {
+            ShapeDesc::Box { half_extents: Vec3::splat(half) }
+        };
+        ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, at) }
+    }
+}
+
 /// Why a `SHAPE:SIZE_M:MASS_KG` text is not a [`GraspObject`].
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GraspObjectError {
@@ -92,21 +112,6 @@ pub enum GraspObjectError {
         /// What was given.
         text: String,
     },
-}
-
-impl GraspObject {
-    /// This object named `name`, sitting in the grasp at `site`
-    /// ([`GraspSite::rotation`]).
-    pub fn at(self, site: &GraspSite, name: &str) -> ObjectDesc {
-        let half = 0.5 * self.size;
-        let shape = if self.sphere {
-            ShapeDesc::Sphere { radius: half }
-        } else {
-            ShapeDesc::Box { half_extents: Vec3::splat(half) }
-        };
-        let cube = ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, site.point);
-        ObjectDesc { shape, rotation: site.rotation, ..cube }
-    }
 }
 
 impl std::str::FromStr for GraspObject {

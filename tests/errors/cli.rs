@@ -124,6 +124,19 @@ fn a_live_service_that_is_not_there_is_named() {
 }
 
 #[test]
+fn live_objects_and_scenes_are_checked_before_connecting() {
+    let e = usage_error(&["live", "--object", "sphere:0.03:0.02"]);
+    names(e, &["required arguments were not provided", "--object-at"]);
+    let e = usage_error(&["live", "--object-at", "0,0.1"]);
+    names(e, &["'0,0.1'", "--object-at", "three finite numbers"]);
+    let e = usage_error(&["live", "--object-at", "0,0.1,0", "--object", "cube:0.04:0.05"]);
+    names(e, &["--object", "unknown shape \"cube\""]);
+    let dir = Scratch::new("cli-live");
+    let e = cli_error(&["live", "--scene", &dir.text("gone.json")]);
+    names(e, &[&dir.text("gone.json"), "No such file"]);
+}
+
+#[test]
 fn replay_lists_the_tracking_glitches_it_left_out() {
     // A stale frame and a hand given twice: the replay runs, and says what
     // it left out, in text and in JSON.

@@ -5,6 +5,7 @@
 mod bench;
 mod cli;
 mod input;
+mod joints;
 mod live;
 mod mesh;
 mod report;

@@ -19,6 +19,7 @@ mod safety;
 mod scenarios;
 mod throw;
 mod tilt;
+mod trackers;
 mod tracking;
 
 use coulomb_hands::hand::rig::HandRig;

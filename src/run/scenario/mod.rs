@@ -28,9 +28,11 @@
 //!   per finger, optional knuckle flexion, thumb opposition, finger spread;
 //!   optional `"scale"` for
 //!   the hand's size),
-//!   or a Leap recording,
+//!   or a recording (Leap Motion, or a joint recording,
+//!   [`crate::input::joints`]),
 //!   `{"recording": "path.json.lz", "offset": [x, y, z]}`, whose path is
-//!   relative to the scenario file.
+//!   relative to the scenario file; `offset` is where the recording's
+//!   origin sits in the world (m).
 //! * `checks`: see [`check::Measure`] for what can be measured; `contacts`
 //!   counts only the hand contacts that press (normal force > 0), and an
 //!   object's release (`release_speed`, `landing_error`,
@@ -50,7 +52,6 @@ use super::drive::{self, Driver, HandSource, Observer, RecordedHand};
 use crate::file_error::FileError;
 use crate::hand::Side;
 use crate::hand::rig::HandRig;
-use crate::input::convert::Conversion;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::pipeline::{InteractionConfig, InteractionWorld};
 use crate::scene::file::SceneEntry;
@@ -110,7 +111,7 @@ struct HandEntry {
     #[serde(default)]
     keys: Vec<Key>,
     recording: Option<PathBuf>,
-    /// Where the recording's device sits in the world (m).
+    /// Where the recording's origin (a Leap device) sits in the world (m).
     #[serde(default)]
     offset: Vec3,
     /// Size of a scripted hand relative to the average adult's (1).
@@ -127,7 +128,7 @@ fn one() -> f32 {
 pub enum ScenarioHand {
     /// Keyframes on the rig.
     Script(Script),
-    /// One hand of a Leap recording.
+    /// One hand of a recording.
     Recording {
         /// The recording, converted.
         playback: Box<Playback>,
@@ -339,14 +340,8 @@ fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
             if !h.offset.is_finite() {
                 return Err(field("offset", &format!("must be finite, got {:?}", h.offset)));
             }
-            let recording = crate::input::leap::load(&dir.join(path))?;
-            let conversion = Conversion::leap_desktop(h.offset);
-            let playback = Playback::new(
-                &recording.source_name,
-                &recording.frames,
-                &conversion,
-                DEFAULT_GRACE,
-            )?;
+            let recording = crate::input::recording::load(&dir.join(path))?;
+            let playback = recording.playback(h.offset, DEFAULT_GRACE)?;
             let track = match h.side {
                 None => 0,
                 Some(side) => {
