@@ -4,12 +4,15 @@
 //!
 //! Replays, scenarios, the live stream, the demo and the tests all run
 //! through [`Driver::run`]; what differs is where poses come from
-//! ([`HandSource`]) and who watches ([`Observer`]).
+//! ([`HandSource`]) and who watches ([`Observer`]). An app with a loop of
+//! its own (the Bevy plugin's fixed tick) calls [`Driver::step`], the
+//! loop's body, once per tick; `run` is that body in a loop.
 
 use super::RunError;
 use crate::hand::{HandId, HandPose, HandSample, Side};
 use crate::input::playback::Playback;
 use crate::pipeline::InteractionWorld;
+use std::borrow::BorrowMut;
 
 /// Where one hand's poses come from, sampled on the physics clock.
 pub trait HandSource {
@@ -125,7 +128,7 @@ pub struct HandFrame {
 pub struct StepView<'a> {
     /// The world after the step.
     pub world: &'a InteractionWorld,
-    /// The step's index in this run, from 0.
+    /// The step's index since the driver began, from 0.
     pub index: usize,
     /// The time at the end of the step, on the driver's clock (s).
     pub t: f64,
@@ -173,9 +176,11 @@ impl<F: FnMut(&StepView) -> Result<(), RunError>> Observer for F {
     }
 }
 
-/// Drives a world: hand sources in, observers out.
-pub struct Driver<'w, 's> {
-    world: &'w mut InteractionWorld,
+/// Drives a world: hand sources in, observers out. It borrows the world
+/// (`Driver::new(&mut world)`), or owns it (`Driver::new(world)`) where the
+/// driver must outlive the caller's stack, as in an app's resource.
+pub struct Driver<'s, W: BorrowMut<InteractionWorld>> {
+    world: W,
     sources: Vec<Box<dyn HandSource + 's>>,
     frames: Vec<HandFrame>,
     /// The world's time when the driver took it (s).
@@ -184,23 +189,23 @@ pub struct Driver<'w, 's> {
     steps: usize,
 }
 
-impl<'w, 's> Driver<'w, 's> {
+impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
     /// A driver of `world`, whose clock starts at the world's time.
-    pub fn new(world: &'w mut InteractionWorld) -> Self {
-        let start = world.time();
+    pub fn new(world: W) -> Self {
+        let start = world.borrow().time();
         Driver { world, sources: Vec::new(), frames: Vec::new(), start, steps: 0 }
     }
 
     /// Adds a hand to the world, posed by `source` from the next step on.
     pub fn add_hand(&mut self, source: impl HandSource + 's) -> HandId {
-        let id = self.world.add_hand(source.side());
+        let id = self.world.borrow_mut().add_hand(source.side());
         self.push(id, Box::new(source));
         id
     }
 
     /// Poses a hand already in the world by `source`.
     pub fn drive(&mut self, hand: HandId, source: impl HandSource + 's) -> Result<(), RunError> {
-        if self.world.hand_side(hand).is_none() {
+        if self.world().hand_side(hand).is_none() {
             return Err(crate::pipeline::WorldError::NoSuchHand(hand).into());
         }
         self.push(hand, Box::new(source));
@@ -215,60 +220,122 @@ impl<'w, 's> Driver<'w, 's> {
 
     /// The world being driven.
     pub fn world(&self) -> &InteractionWorld {
-        self.world
+        self.world.borrow()
     }
 
     /// The world being driven, to change between runs.
     pub fn world_mut(&mut self) -> &mut InteractionWorld {
-        self.world
+        self.world.borrow_mut()
+    }
+
+    /// The driven hands as the last step saw them, in the order they were
+    /// added (no samples before the first step).
+    pub fn hands(&self) -> &[HandFrame] {
+        &self.frames
+    }
+
+    /// Steps run so far.
+    pub fn steps(&self) -> usize {
+        self.steps
     }
 
     /// The time on the driver's clock after `steps` steps (s).
     fn clock(&self, steps: usize) -> f64 {
-        self.start + steps as f64 * self.world.config().dt as f64
+        self.start + steps as f64 * self.world().config().dt as f64
     }
 
-    /// Runs up to `steps` steps; stops early, before a step, once every
-    /// source has finished. Each step: observers' `before_step`, every
-    /// source sampled and its hand posed or cleared, the hand forces,
-    /// observers' `after_hand_forces`, rapier's step, then observers'
-    /// `after_step`. Returns the steps run.
+    /// Runs up to `steps` steps of [`Driver::step`]; stops early, before a
+    /// step, once every source has finished. Returns the steps run.
     pub fn run(
         &mut self,
         steps: usize,
         observers: &mut [&mut dyn Observer],
     ) -> Result<usize, RunError> {
         for i in 0..steps {
-            let t = self.clock(self.steps);
-            for o in observers.iter_mut() {
-                o.before_step(self.world, t)?;
-            }
-            for (source, frame) in self.sources.iter_mut().zip(self.frames.iter_mut()) {
-                frame.sample = source.sample(t)?;
-                match &frame.sample {
-                    Some(s) => self.world.set_hand_pose(frame.id, &s.pose)?,
-                    None => self.world.clear_hand_pose(frame.id)?,
-                }
-            }
-            if !self.sources.is_empty() && self.sources.iter().all(|s| s.finished()) {
+            if !self.step(observers)? {
                 return Ok(i);
-            }
-            self.world.apply_hand_forces();
-            for o in observers.iter_mut() {
-                o.after_hand_forces(self.world)?;
-            }
-            self.world.step_physics();
-            self.steps += 1;
-            let view = StepView {
-                world: self.world,
-                index: i,
-                t: self.clock(self.steps),
-                hands: &self.frames,
-            };
-            for o in observers.iter_mut() {
-                o.after_step(&view)?;
             }
         }
         Ok(steps)
+    }
+
+    /// Runs one step, unless every source has finished (then it returns
+    /// `false` having sampled them, and nothing moved): observers'
+    /// `before_step`, every source sampled and its hand posed or cleared,
+    /// the hand forces, observers' `after_hand_forces`, rapier's step, then
+    /// observers' `after_step`.
+    pub fn step(&mut self, observers: &mut [&mut dyn Observer]) -> Result<bool, RunError> {
+        let t = self.clock(self.steps);
+        let world = self.world.borrow_mut();
+        for o in observers.iter_mut() {
+            o.before_step(world, t)?;
+        }
+        for (source, frame) in self.sources.iter_mut().zip(self.frames.iter_mut()) {
+            frame.sample = source.sample(t)?;
+            match &frame.sample {
+                Some(s) => world.set_hand_pose(frame.id, &s.pose)?,
+                None => world.clear_hand_pose(frame.id)?,
+            }
+        }
+        if !self.sources.is_empty() && self.sources.iter().all(|s| s.finished()) {
+            return Ok(false);
+        }
+        world.apply_hand_forces();
+        for o in observers.iter_mut() {
+            o.after_hand_forces(world)?;
+        }
+        world.step_physics();
+        let index = self.steps;
+        self.steps += 1;
+        let view = StepView {
+            world: self.world.borrow(),
+            index,
+            t: self.clock(self.steps),
+            hands: &self.frames,
+        };
+        for o in observers.iter_mut() {
+            o.after_step(&view)?;
+        }
+        Ok(true)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::InteractionConfig;
+
+    /// An untracked hand whose source finishes at its `n`-th sample.
+    struct Ends(usize);
+
+    impl HandSource for Ends {
+        fn side(&self) -> Side {
+            Side::Right
+        }
+
+        fn sample(&mut self, _t: f64) -> Result<Option<HandSample>, RunError> {
+            self.0 = self.0.saturating_sub(1);
+            Ok(None)
+        }
+
+        fn finished(&self) -> bool {
+            self.0 == 0
+        }
+    }
+
+    #[test]
+    fn steps_one_at_a_time_as_run_does_and_not_once_sources_finish() {
+        let world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+        let dt = world.config().dt as f64;
+        let mut owned = Driver::new(world);
+        owned.add_hand(Ends(3));
+        let stepped: Vec<bool> = (0..4).map(|_| owned.step(&mut []).unwrap()).collect();
+        assert_eq!(stepped, [true, true, false, false]);
+        assert_eq!((owned.steps(), owned.world().time()), (2, 2.0 * dt));
+        let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+        let mut borrowing = Driver::new(&mut world);
+        borrowing.add_hand(Ends(3));
+        assert_eq!(borrowing.run(4, &mut []).unwrap(), 2);
+        assert_eq!(world.time(), 2.0 * dt);
     }
 }

@@ -164,7 +164,7 @@ pub fn soak(
         let shifted = fixtures.iter().map(|f| Fixture { release_by: f.release_by + origin, ..*f });
         let mut fixtures = Fixtures(shifted.collect());
         let mut summary = Summary::new(world)?;
-        let mut driver = Driver::new(world);
+        let mut driver = Driver::new(&mut *world);
         for (track, &hand) in hands.iter().enumerate() {
             driver.drive(hand, LoopHand { hand: RecordedHand { playback, track }, origin })?;
         }

@@ -50,8 +50,8 @@ pub mod script;
 use super::RunError;
 use super::drive::{self, Driver, HandSource, Observer, RecordedHand};
 use crate::file_error::FileError;
-use crate::hand::Side;
 use crate::hand::rig::HandRig;
+use crate::hand::{HandSample, Side};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::pipeline::{InteractionConfig, InteractionWorld};
 use crate::scene::file::SceneEntry;
@@ -144,6 +144,37 @@ impl ScenarioHand {
             ScenarioHand::Script(s) => Box::new(s),
             ScenarioHand::Recording { playback, track } => {
                 Box::new(RecordedHand { playback, track: *track })
+            }
+        }
+    }
+}
+
+/// An owned scenario hand is a source too, for a driver that outlives the
+/// scenario (an app's, which keeps its driver in a resource).
+impl HandSource for ScenarioHand {
+    fn side(&self) -> Side {
+        match self {
+            ScenarioHand::Script(s) => s.rig.side,
+            ScenarioHand::Recording { playback, track } => {
+                RecordedHand { playback, track: *track }.side()
+            }
+        }
+    }
+
+    fn tracker_id(&self) -> Option<i64> {
+        match self {
+            ScenarioHand::Script(_) => None,
+            ScenarioHand::Recording { playback, track } => {
+                RecordedHand { playback, track: *track }.tracker_id()
+            }
+        }
+    }
+
+    fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
+        match self {
+            ScenarioHand::Script(s) => (&*s).sample(t),
+            ScenarioHand::Recording { playback, track } => {
+                RecordedHand { playback, track: *track }.sample(t)
             }
         }
     }
