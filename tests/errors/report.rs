@@ -195,8 +195,8 @@ fn a_plain_report_runs_the_study_and_the_bench_itself() {
     assert!(stdout.ends_with("accuracy: run, bench: run\n"), "{stdout}");
     let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
     assert!(!page.contains("class=\"absent\""), "a section says how to produce it");
-    assert!(page.contains("run by this command (debug build): 1 synthetic users × 1 trials"));
-    assert!(page.contains("measured by this command (debug build): 20 timed steps per figure"));
+    assert!(page.contains(" build): 1 synthetic users × 1 trials, seed 1, methods coulomb,"));
+    assert!(page.contains(" build): 20 timed steps per figure; the reference scene with 16"));
     // Every method's one trial, completed with an error on the board or
     // counted as failed.
     let diagonal_mm = SQUARES as f64 * SQUARE as f64 * 2f64.sqrt() * 1e3;
