@@ -5,20 +5,25 @@ use super::progress_bar;
 use coulomb_hands::RunError;
 use coulomb_hands::eval::{AccuracyOptions, AccuracyStudy, accuracy};
 
-/// Runs the study and prints its table, or one JSON object.
-pub fn run(options: &AccuracyOptions, json: bool) -> Result<AccuracyStudy, RunError> {
-    use std::io::IsTerminal;
+/// Runs the study with a progress bar on stderr if `show`.
+pub fn study(options: &AccuracyOptions, show: bool) -> Result<AccuracyStudy, RunError> {
     let total = (options.users * options.trials * options.methods.len()) as u64;
-    let show = !json && std::io::stderr().is_terminal();
     let bar = progress_bar(show, total, "{bar:30} {pos}/{len} trials ({elapsed}, eta {eta})");
-    let report = accuracy(options, &mut |done, _| bar.set_position(done as u64))?;
+    let report = accuracy(options, &mut |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
+    report
+}
+
+/// `eval accuracy`: runs the study and prints its table, or one JSON object.
+pub fn run(options: &AccuracyOptions, json: bool) -> Result<(), RunError> {
+    use std::io::IsTerminal;
+    let report = study(options, !json && std::io::stderr().is_terminal())?;
     if json {
         println!("{}", serde_json::to_string_pretty(&report).map_err(std::io::Error::other)?);
     } else {
         print_table(&report);
     }
-    Ok(report)
+    Ok(())
 }
 
 /// Table 5.2's shape: one row per method, the thesis's figure beside it.
