@@ -157,7 +157,8 @@ enum Command {
         /// Only these scenarios (shipped names or files), comma-separated.
         #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
         scenarios: Option<Vec<String>>,
-        /// Only these recordings, comma-separated (default: every one in data/leap/).
+        /// Only these recordings (Leap or joint recordings), comma-separated (default: every one in
+        /// data/leap/).
         #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
         replays: Option<Vec<std::path::PathBuf>>,
         #[command(flatten, next_help_heading = "Accuracy study (without --accuracy)")]

@@ -201,9 +201,9 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     };
     let replays = Sourced {
         source: format!(
-            "replayed by this command: {which}, at the 1 kHz physics rate with automatic γ \
-             (Eq. 3.11) and a box at each one's first grasp (4.5 cm, 50 g in a fist; 2 cm, \
-             10 g otherwise)"
+            "replayed by this command: {which}, at the 1 kHz physics rate with the replay's \
+             defaults (γ = 400 N/m) and a box at every closing of a hand (4.5 cm, 50 g if the \
+             first closing is a fist; 2 cm, 10 g otherwise)"
         ),
         data: replay_runs,
     };
