@@ -41,10 +41,14 @@ fn print_table(r: &AccuracyStudy) {
             r.thesis.iter().find(|t| t.method == m.method).map_or("—".to_string(), |t| {
                 format!("{:.1} ± {:.1} / {:.1}", t.mean_mm, t.sd_mm, t.median_mm)
             });
-        let error = format!("{:.1} ± {:.1} / {:.1}", m.mean_mm, m.sd_mm, m.median_mm);
+        let [mean, sd, median, time] =
+            [(m.mean_mm, 1), (m.sd_mm, 1), (m.median_mm, 1), (m.mean_time_s, 2)].map(
+                |(v, digits)| if v.is_finite() { format!("{v:.digits$}") } else { "—".into() },
+            );
+        let error = format!("{mean} ± {sd} / {median}");
         println!(
-            "{:<10} {error:>24} {:>8.2} {:>7} {:>6}  {thesis:>20}",
-            m.method, m.mean_time_s, m.failed, m.drops
+            "{:<10} {error:>24} {time:>8} {:>7} {:>6}  {thesis:>20}",
+            m.method, m.failed, m.drops
         );
     }
     let rows = "its method, the Leap Motion Interaction Engine, its re-implementation of [23]";
