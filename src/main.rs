@@ -196,7 +196,22 @@ enum Study {
     },
 }
 
+/// A reader that stops reading early (`coulomb-hands replay … | head`)
+/// ends the program quietly, as it does other Unix tools, instead of
+/// making `println!` panic on the closed pipe: Rust's runtime ignores
+/// SIGPIPE, and this gives it back its default.
+#[cfg(unix)]
+fn end_quietly_on_a_closed_pipe() {
+    // SAFETY: first thing in `main`, before any other thread exists;
+    // `signal` with `SIG_DFL` only resets a disposition.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 fn main() -> ExitCode {
+    #[cfg(unix)]
+    end_quietly_on_a_closed_pipe();
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo {
         json: false,
