@@ -4,6 +4,7 @@ mod cli;
 
 use clap::{Parser, Subcommand};
 use cli::args::{at_least_zero, parse_gamma, parse_vec3, positive};
+use cli::options::{BenchRunArgs, StudyArgs};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -134,23 +135,36 @@ enum Command {
         study: Study,
     },
     /// Write a self-contained HTML report (index.html): placement accuracy, step
-    /// times, every shipped scenario and the bundled replays, with plots.
+    /// times, every shipped scenario and the bundled replays, with plots. Without
+    /// --accuracy or --bench, it runs the accuracy study and the bench itself.
     Report {
         /// The directory to write index.html to; checked before any work.
         #[arg(long, default_value = "report")]
         out: std::path::PathBuf,
-        /// The placement-accuracy study's JSON (`eval accuracy --json`).
+        /// The placement-accuracy study's JSON (`eval accuracy --json`), instead of
+        /// running the study.
         #[arg(long, value_name = "FILE")]
         accuracy: Option<std::path::PathBuf>,
-        /// The benchmark's JSON (`bench --json`).
+        /// The benchmark's JSON (`bench --json`), instead of running the bench.
         #[arg(long, value_name = "FILE")]
         bench: Option<std::path::PathBuf>,
+        /// Leave the accuracy study out.
+        #[arg(long, conflicts_with = "accuracy")]
+        no_accuracy: bool,
+        /// Leave the benchmark out.
+        #[arg(long, conflicts_with = "bench")]
+        no_bench: bool,
         /// Only these scenarios (shipped names or files), comma-separated.
         #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
         scenarios: Option<Vec<String>>,
-        /// Only these recordings, comma-separated (default: every one in data/leap/).
+        /// Only these recordings (Leap or joint recordings), comma-separated (default: every one in
+        /// data/leap/).
         #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
         replays: Option<Vec<std::path::PathBuf>>,
+        #[command(flatten, next_help_heading = "Accuracy study (without --accuracy)")]
+        study: StudyArgs,
+        #[command(flatten, next_help_heading = "Bench (without --bench)")]
+        timing: BenchRunArgs,
     },
     /// Write the project's generated meshes (U bracket, chess pawn) as OBJ files.
     Mesh {
@@ -161,25 +175,11 @@ enum Command {
     /// Time steps against bones in contact (6..128) and the reference scene awake and
     /// asleep (thesis §5.3, Fig. 5.6); with --mujoco, MuJoCo's step beside them.
     Bench {
-        /// Timed steps per figure, after a warm-up.
-        #[arg(long, default_value_t = 5000, value_parser = clap::value_parser!(u32).range(1..))]
-        steps: u32,
-        /// Held boxes in the reference scene (2 bones in contact each), 1..=16.
-        #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u16).range(1..=16))]
-        boxes: u16,
-        /// Leave the reference scene's tower out.
-        #[arg(long)]
-        no_tower: bool,
+        #[command(flatten)]
+        timing: BenchRunArgs,
         /// Print one JSON object instead of the table.
         #[arg(long)]
         json: bool,
-        /// Also time MuJoCo's mj_step on the reference scene (bench/mujoco_reference.py).
-        #[arg(long)]
-        mujoco: bool,
-        /// The Python with pip's mujoco [default: target/mujoco-venv/bin/python if there,
-        /// else python3].
-        #[arg(long, requires = "mujoco")]
-        python: Option<std::path::PathBuf>,
     },
 }
 
@@ -188,25 +188,30 @@ enum Study {
     /// The positioning-accuracy study (§5.2, Table 5.2): synthetic users move a cube to a
     /// target square with each method.
     Accuracy {
-        /// Synthetic users.
-        #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u16).range(1..))]
-        users: u16,
-        /// Trials per user.
-        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u16).range(1..))]
-        trials: u16,
-        /// Seed of users, squares and tracking jitter.
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
-        /// The methods to compare, comma-separated.
-        #[arg(long, value_delimiter = ',', default_value = "coulomb,thesis,kinematic,heuristic")]
-        method: Vec<coulomb_hands::Method>,
+        #[command(flatten)]
+        study: StudyArgs,
         /// Print one JSON object instead of the table.
         #[arg(long)]
         json: bool,
     },
 }
 
+/// A reader that stops reading early (`coulomb-hands replay … | head`)
+/// ends the program quietly, as it does other Unix tools, instead of
+/// making `println!` panic on the closed pipe: Rust's runtime ignores
+/// SIGPIPE, and this gives it back its default.
+#[cfg(unix)]
+fn end_quietly_on_a_closed_pipe() {
+    // SAFETY: first thing in `main`, before any other thread exists;
+    // `signal` with `SIG_DFL` only resets a disposition.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 fn main() -> ExitCode {
+    #[cfg(unix)]
+    end_quietly_on_a_closed_pipe();
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo {
         json: false,
@@ -216,24 +221,28 @@ fn main() -> ExitCode {
         Command::Demo { json, thesis_kinetic, every } => {
             cli::demo::demo(json, thesis_kinetic, every as f32)
         }
-        Command::Bench { steps, boxes, no_tower, json, mujoco, python } => {
-            let (steps, boxes, tower) = (steps as usize, boxes.into(), !no_tower);
-            cli::bench::bench(cli::bench::BenchArgs { steps, boxes, tower, json, mujoco, python })
+        Command::Bench { timing, json } => cli::bench::bench(&timing.options(), json),
+        Command::Eval { study: Study::Accuracy { study, json } } => {
+            cli::eval::run(&study.options(), json).map_err(|e| e.to_string())
         }
-        Command::Eval { study: Study::Accuracy { users, trials, seed, method, json } } => {
-            let options = coulomb_hands::eval::AccuracyOptions {
-                users: users.into(),
-                trials: trials.into(),
-                seed,
-                methods: method,
-            };
-            cli::eval::run(&options, json).map(|_| ()).map_err(|e| e.to_string())
-        }
-        Command::Report { out, accuracy, bench, scenarios, replays } => {
+        Command::Report {
+            out,
+            accuracy,
+            bench,
+            no_accuracy,
+            no_bench,
+            scenarios,
+            replays,
+            study,
+            timing,
+        } => {
+            use cli::report::Source;
+            let accuracy = Source::new(accuracy.as_deref(), no_accuracy, || study.options());
+            let bench = Source::new(bench.as_deref(), no_bench, || timing.options());
             cli::report::report(cli::report::ReportArgs {
                 out: &out,
-                accuracy: accuracy.as_deref(),
-                bench: bench.as_deref(),
+                accuracy,
+                bench,
                 scenarios: scenarios.as_deref(),
                 replays: replays.as_deref(),
             })

@@ -1,7 +1,7 @@
 //! `bench`: the performance analysis of thesis §5.3 (Fig. 5.6), printed.
 
 use super::progress_bar;
-use coulomb_hands::run::bench::{self, BenchOptions, BenchReport, StepTimes, linear_fit, mujoco};
+use coulomb_hands::run::bench::{self, BenchOptions, BenchReport, StepTimes, linear_fit};
 use std::io::IsTerminal;
 
 /// The interaction layer's target at 32 bones (µs per step).
@@ -9,33 +9,21 @@ const INTERACTION_TARGET_US: f64 = 10.0;
 /// The awake reference step's target, as a share of MuJoCo's step.
 const MUJOCO_TARGET_RATIO: f64 = 0.15;
 
-/// `bench`'s arguments.
-pub struct BenchArgs {
-    pub steps: usize,
-    pub boxes: usize,
-    pub tower: bool,
-    pub json: bool,
-    pub mujoco: bool,
-    pub python: Option<std::path::PathBuf>,
+/// Runs the bench with a progress bar on stderr if `show`.
+pub fn measure(options: &BenchOptions, show: bool) -> Result<BenchReport, String> {
+    let bar = progress_bar(show, options.total_steps(), "{bar:30} {pos}/{len} steps {msg}");
+    let report = bench::run(options, &mut |n| bar.inc(n)).map_err(|e| e.to_string());
+    bar.finish_and_clear();
+    report
 }
 
-pub fn bench(args: BenchArgs) -> Result<(), String> {
-    let python = args.python.unwrap_or_else(mujoco::default_python);
-    let options = BenchOptions {
-        steps: args.steps,
-        boxes: args.boxes,
-        tower: args.tower,
-        mujoco: args.mujoco.then_some(python),
-    };
-    let show = std::io::stderr().is_terminal();
-    let bar = progress_bar(show, options.total_steps(), "{bar:30} {pos}/{len} steps {msg}");
-    let report = bench::run(&options, &mut |n| bar.inc(n)).map_err(|e| e.to_string());
-    bar.finish_and_clear();
-    let report = report?;
-    if args.json {
+/// `bench`: runs it and prints its table, or one JSON object.
+pub fn bench(options: &BenchOptions, json: bool) -> Result<(), String> {
+    let report = measure(options, std::io::stderr().is_terminal())?;
+    if json {
         println!("{}", serde_json::to_string(&report).map_err(|e| e.to_string())?);
     } else {
-        print_report(&report, &options);
+        print_report(&report, options);
     }
     Ok(())
 }

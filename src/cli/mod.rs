@@ -5,6 +5,7 @@ pub mod bench;
 pub mod demo;
 pub mod eval;
 pub mod live;
+pub mod options;
 pub mod replay;
 pub mod report;
 pub mod scenario;

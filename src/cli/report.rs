@@ -1,21 +1,54 @@
 //! `report`: the self-contained HTML report (`output::report`), with the
-//! scenarios and replays run here and the accuracy study and benchmark
-//! read from their JSON.
+//! scenarios and replays run here, and the accuracy study and benchmark
+//! run here too unless their JSON is given or they are left out.
 
 use super::progress_bar;
+use coulomb_hands::eval::AccuracyOptions;
 use coulomb_hands::output::report::{
     AccuracyStudy, BenchReport, Header, ReportData, Sourced, html, utc_date,
 };
+use coulomb_hands::run::bench::{BenchOptions, mujoco};
 use coulomb_hands::run::report::{ReplayInput, bundled_recordings, scenario_run};
 use coulomb_hands::run::scenario::{Scenario, shipped};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 pub struct ReportArgs<'a> {
     pub out: &'a Path,
-    pub accuracy: Option<&'a Path>,
-    pub bench: Option<&'a Path>,
+    pub accuracy: Source<'a, AccuracyOptions>,
+    pub bench: Source<'a, BenchOptions>,
     pub scenarios: Option<&'a [String]>,
     pub replays: Option<&'a [PathBuf]>,
+}
+
+/// Where the accuracy study or the benchmark comes from.
+pub enum Source<'a, O> {
+    /// Its JSON, written before.
+    File(&'a Path),
+    /// Run by the report, with these options.
+    Run(O),
+    /// Left out.
+    Skip,
+}
+
+impl<'a, O> Source<'a, O> {
+    /// A given file wins; else it is left out if `skip`, else run.
+    pub fn new(file: Option<&'a Path>, skip: bool, run: impl FnOnce() -> O) -> Self {
+        match file {
+            Some(file) => Source::File(file),
+            None if skip => Source::Skip,
+            None => Source::Run(run()),
+        }
+    }
+
+    /// For the summary line.
+    fn word(&self) -> &'static str {
+        match self {
+            Source::File(_) => "given",
+            Source::Run(_) => "run",
+            Source::Skip => "skipped",
+        }
+    }
 }
 
 /// Checks that `dir` can be written (making it), before any work: a probe
@@ -28,15 +61,52 @@ fn writable(dir: &Path) -> Result<(), String> {
     std::fs::remove_file(&probe).map_err(fail)
 }
 
-/// `file`'s data with its source, if a file was given.
-fn read<T>(
-    file: Option<&Path>,
+/// `source`'s data read from its file, if it is one.
+fn read<T, O>(
+    source: &Source<O>,
     load: fn(&Path) -> Result<T, coulomb_hands::FileError>,
     command: &str,
 ) -> Result<Option<Sourced<T>>, coulomb_hands::FileError> {
-    let Some(file) = file else { return Ok(None) };
+    let Source::File(file) = source else { return Ok(None) };
     let source = format!("{}, written by {command}", file.display());
     Ok(Some(Sourced { source, data: load(file)? }))
+}
+
+/// The accuracy study run here, if it is to be, with a progress bar.
+fn study(
+    source: &Source<AccuracyOptions>,
+    build: &str,
+) -> Result<Option<Sourced<AccuracyStudy>>, coulomb_hands::RunError> {
+    let Source::Run(o) = source else { return Ok(None) };
+    let methods: Vec<&str> = o.methods.iter().map(|m| m.name()).collect();
+    let source = format!(
+        "run by this command ({build} build): {} synthetic users × {} trials, seed {}, \
+         methods {}",
+        o.users,
+        o.trials,
+        o.seed,
+        methods.join(", ")
+    );
+    let data = super::eval::study(o, std::io::stderr().is_terminal())?;
+    Ok(Some(Sourced { source, data }))
+}
+
+/// The benchmark run here, if it is to be, with a progress bar.
+fn bench(
+    source: &Source<BenchOptions>,
+    build: &str,
+) -> Result<Option<Sourced<BenchReport>>, String> {
+    let Source::Run(o) = source else { return Ok(None) };
+    let source = format!(
+        "measured by this command ({build} build): {} timed steps per figure; the reference \
+         scene with {} held boxes{}{}",
+        o.steps,
+        o.boxes,
+        if o.tower { " and its tower" } else { ", without its tower" },
+        if o.mujoco.is_some() { "; MuJoCo in the same run" } else { "" },
+    );
+    let data = super::bench::measure(o, std::io::stderr().is_terminal())?;
+    Ok(Some(Sourced { source, data }))
 }
 
 /// The command line as typed, the program by its file name.
@@ -68,12 +138,14 @@ fn header() -> Header {
     }
 }
 
-/// Writes `out/index.html`: checks `out` and reads every input first, then
-/// runs the scenarios and replays with a progress bar on a terminal.
+/// Writes `out/index.html`: checks `out`, reads every input and checks
+/// MuJoCo's Python first, then runs the accuracy study, the bench, the
+/// scenarios and the replays, with progress bars on a terminal.
 pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     writable(args.out)?;
-    let accuracy = read(args.accuracy, AccuracyStudy::load, "coulomb-hands eval accuracy --json")?;
-    let bench = read(args.bench, BenchReport::load, "coulomb-hands bench --json")?;
+    let accuracy_file =
+        read(&args.accuracy, AccuracyStudy::load, "coulomb-hands eval accuracy --json")?;
+    let bench_file = read(&args.bench, BenchReport::load, "coulomb-hands bench --json")?;
     let names: Vec<String> = match args.scenarios {
         Some(names) => names.to_vec(),
         None => shipped().iter().map(|s| s.0.to_string()).collect(),
@@ -81,8 +153,13 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
     let files = args.replays.map_or_else(bundled_recordings, <[PathBuf]>::to_vec);
     let inputs = files.iter().map(|f| ReplayInput::load(f)).collect::<Result<Vec<_>, _>>()?;
+    if let Source::Run(BenchOptions { mujoco: Some(python), .. }) = &args.bench {
+        mujoco::check(python)?;
+    }
 
-    use std::io::IsTerminal;
+    let header = header();
+    let accuracy = accuracy_file.or(study(&args.accuracy, &header.build)?);
+    let bench = bench_file.or(bench(&args.bench, &header.build)?);
     let runs = (scenarios.len() + inputs.len()) as u64;
     let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
     let bar = progress_bar(std::io::stderr().is_terminal(), runs, template);
@@ -100,14 +177,13 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     }
     bar.finish_and_clear();
 
-    let header = header();
     let passed = scenario_runs.iter().filter(|r| r.passed).count();
     let summary = format!(
         "{} scenarios ({passed} passed), {} replays; accuracy: {}, bench: {}",
         scenario_runs.len(),
         replay_runs.len(),
-        if accuracy.is_some() { "given" } else { "not given" },
-        if bench.is_some() { "given" } else { "not given" },
+        args.accuracy.word(),
+        args.bench.word(),
     );
     let (n, build) = (scenario_runs.len(), &header.build);
     let which = match args.scenarios {
@@ -125,9 +201,9 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     };
     let replays = Sourced {
         source: format!(
-            "replayed by this command: {which}, at the 1 kHz physics rate with automatic γ \
-             (Eq. 3.11) and a box at each one's first grasp (4.5 cm, 50 g in a fist; 2 cm, \
-             10 g otherwise)"
+            "replayed by this command: {which}, at the 1 kHz physics rate with the replay's \
+             defaults (γ = 400 N/m) and a box at every closing of a hand (4.5 cm, 50 g if the \
+             first closing is a fist; 2 cm, 10 g otherwise)"
         ),
         data: replay_runs,
     };

@@ -122,10 +122,12 @@ fn trial(method: Method, task: &Task) -> Result<Trial, RunError> {
     Ok(Trial { error, time: user.done_at.unwrap_or(TRIAL_LIMIT), failed, drops: user.drops })
 }
 
-/// Mean, sample standard deviation and median of `v` (0 for none).
+/// Mean, sample standard deviation and median of `v`: not numbers for
+/// none, since a method that completed no trial has no error, not a zero
+/// one (the JSON writes `null`, the table and the report `—`).
 fn stats(v: &[f64]) -> (f64, f64, f64) {
     if v.is_empty() {
-        return (0.0, 0.0, 0.0);
+        return (f64::NAN, f64::NAN, f64::NAN);
     }
     let n = v.len() as f64;
     let mean = v.iter().sum::<f64>() / n;

@@ -40,7 +40,7 @@ const CARRY: f32 = 0.05;
 const DROPPED: f32 = 0.025;
 /// A cube nearer its target than this is nudged, not picked up again: by
 /// less than its half size it is nearly in place (m).
-const NUDGE_BELOW: f32 = CUBE_HALF;
+pub const NUDGE_BELOW: f32 = CUBE_HALF;
 /// The longest a nudge pushes (s).
 const PUSH_FOR: f64 = 4.0;
 

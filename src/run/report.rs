@@ -10,9 +10,8 @@ use super::drive::{Observer, StepView};
 use super::grasp::find_grasps;
 use super::replay::{GraspObject, replay, replay_closings, replay_world};
 use super::scenario::Scenario;
-use crate::input::convert::Conversion;
-use crate::input::leap::{self, LeapRecording};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
+use crate::input::recording::{self, Recording};
 use crate::output::report::{ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict};
 use crate::pipeline::InteractionConfig;
 use std::path::{Path, PathBuf};
@@ -99,7 +98,7 @@ pub struct ReplayInput {
     /// it is in it.
     pub name: String,
     /// The recording.
-    pub recording: LeapRecording,
+    pub recording: Recording,
     /// Its hands on the physics clock.
     pub playback: Playback,
 }
@@ -114,12 +113,11 @@ pub fn grasp_object(playback: &Playback, track: usize, closed_at: f64) -> GraspO
 }
 
 impl ReplayInput {
-    /// Reads a recording; errors name the file, the frame and the field.
+    /// Reads a recording of any format ([`recording::load`]); errors name
+    /// the file, the frame and the field.
     pub fn load(path: &Path) -> Result<ReplayInput, RunError> {
-        let recording = leap::load(path)?;
-        let conversion = Conversion::leap_desktop(glam::Vec3::ZERO);
-        let (name, frames) = (&recording.source_name, &recording.frames);
-        let playback = Playback::new(name, frames, &conversion, DEFAULT_GRACE)?;
+        let recording = recording::load(path)?;
+        let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let name = path.strip_prefix(root).unwrap_or(path).display().to_string();
         Ok(ReplayInput { name, recording, playback })
@@ -131,7 +129,7 @@ impl ReplayInput {
     pub fn run(&self) -> ReplayRun {
         let mut out = ReplayRun {
             recording: self.name.clone(),
-            format: self.recording.format_version.to_string(),
+            format: self.recording.format.to_string(),
             frames: self.playback.frames,
             hands: self.playback.tracks.len(),
             duration_s: self.playback.duration,

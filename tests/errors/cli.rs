@@ -225,3 +225,27 @@ fn replay_json_carries_a_verdict_per_closing_and_the_text_a_line_each() {
     let lines: Vec<&str> = text.lines().filter(|l| l.starts_with("  closing-")).collect();
     assert_eq!(lines.len(), 2, "{text}");
 }
+
+#[cfg(unix)]
+#[test]
+fn a_reader_that_stops_early_ends_the_program_quietly() {
+    // `coulomb-hands demo --every 0.001 | head -1`: the pipe closes after
+    // one line of a table far longer than a pipe holds (64 KiB), so the
+    // demo writes into a closed pipe.
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_coulomb-hands"))
+        .args(["demo", "--every", "0.001"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut first).unwrap();
+    assert!(first.starts_with("grasp-lift-carry"), "{first}");
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_ne!(out.status.code(), Some(101), "{stderr}");
+}

@@ -2,9 +2,12 @@
 //! any work, malformed `--accuracy` and `--bench` files name the file, the
 //! line and what is wrong; and, for contrast, the JSON that `eval accuracy`
 //! and `bench` write reads as the report's types, and a report on a reduced
-//! set works.
+//! set works, with the study and the bench run by the report itself or left
+//! out.
 
-use crate::{Scratch, cli_error, names, run};
+use crate::{Scratch, cli_error, names, run, usage_error};
+use coulomb_hands::eval::board::{SQUARE, SQUARES};
+use coulomb_hands::run::bench::SWEEP_BONES;
 
 #[test]
 fn an_unwritable_out_is_named_before_any_work() {
@@ -18,6 +21,14 @@ fn an_unwritable_out_is_named_before_any_work() {
     names(cli_error(&args), &[&format!("--out {under}: cannot write there: ")]);
     let file = plain.display().to_string();
     names(cli_error(&["report", "--out", &file]), &[&format!("--out {file}: cannot write there")]);
+    // A MuJoCo that cannot run is found before the study and the scenarios.
+    let out = dir.text("out");
+    let args = ["report", "--out", &out, "--mujoco", "--python", "/no/such/python"];
+    names(cli_error(&args), &["cannot run /no/such/python", "bench/mujoco.sh"]);
+    assert!(!dir.path("out/index.html").exists());
+    let given = dir.file("given.json", "{}").display().to_string();
+    let both = ["report", "--out", &out, "--bench", &given, "--no-bench"];
+    names(usage_error(&both), &["--bench <FILE>", "--no-bench"]);
 }
 
 #[test]
@@ -106,19 +117,20 @@ fn a_report_of_one_scenario_and_one_replay_has_every_section() {
 fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
     use coulomb_hands::eval::{AccuracyStudy, MethodResult, ThesisResult};
     use coulomb_hands::output::report;
-    use coulomb_hands::run::bench::{BenchReport, MujocoFigures, Reference, StepTimes, SweepRow};
+    use coulomb_hands::run::bench::{
+        BenchReport, MujocoStep, ReferenceScene, StepTimes, SweepPoint,
+    };
     let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
-    let sweep = vec![SweepRow { bones: 6, hands: 1, samples_per_contact: 8, times }];
+    let sweep = vec![SweepPoint { bones: 6, hands: 1, samples_per_contact: 8, times }];
     let (asleep, awake) = (times, StepTimes { rapier_us: 20.0, full_us: 21.0, ..times });
-    let reference = Reference { bones_pressing: 32, objects: 70, asleep, awake, settling_us: 9.0 };
+    let reference =
+        ReferenceScene { bones_pressing: 32, objects: 70, asleep, awake, settling_us: 9.0 };
     let settings = "pyramidal, Euler".to_string();
-    let mujoco = MujocoFigures { step_us: 700.0, settings, ratio_awake: 0.03, ratio_asleep: 0.01 };
+    let mujoco = MujocoStep { step_us: 700.0, settings, ratio_awake: 0.03, ratio_asleep: 0.01 };
     let bench = BenchReport { sweep, reference, mujoco: Some(mujoco) };
     let text = serde_json::to_string(&bench).unwrap();
-    let read: report::BenchReport = serde_json::from_str(&text).unwrap();
-    assert_eq!((read.sweep[0].bones, read.sweep[0].full_us), (6, 3.0));
-    assert_eq!((read.reference.awake.rapier_us, read.reference.settling_us), (20.0, 9.0));
-    assert_eq!(read.mujoco.map(|m| (m.step_us, m.ratio_awake)), Some((700.0, 0.03)));
+    // The same type: what bench writes, the report reads back whole.
+    assert_eq!(serde_json::from_str::<report::BenchReport>(&text).unwrap(), bench);
     // A method that completed no trial has no mean: serde_json writes null.
     let method = |name: &str, errors_mm: Vec<f64>, mean_mm: f64| MethodResult {
         method: name.into(),
@@ -151,4 +163,87 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
     );
     assert!(read.methods[1].mean_mm.is_nan() && read.methods[1].errors_mm.is_empty());
     assert_eq!(read.thesis[0].median_mm, 8.2);
+}
+
+/// The text of each cell of the table row whose first cell is `first`.
+fn row(page: &str, first: &str) -> Vec<String> {
+    let start = [format!("<tr><td>{first}</td>"), format!("<tr><td class=\"num\">{first}</td>")]
+        .iter()
+        .find_map(|r| page.find(r.as_str()))
+        .unwrap_or_else(|| panic!("no table row starts with {first}"));
+    let line = &page[start..page[start..].find("</tr>").map_or(page.len(), |e| start + e)];
+    let text = |cell: &str| cell.rsplit('>').next().unwrap_or("").to_string();
+    line.split("</td>").filter(|c| c.contains("<td")).map(text).collect()
+}
+
+/// The numbers in a cell such as `2.0 ± 0.5 / 1.8`; none if any is not one.
+fn numbers(cell: &str) -> Option<Vec<f64>> {
+    let parts = cell.split(['±', '/', ' ']).filter(|p| !p.is_empty());
+    parts.map(|p| p.parse::<f64>().ok().filter(|x| x.is_finite())).collect()
+}
+
+#[test]
+fn a_plain_report_runs_the_study_and_the_bench_itself() {
+    let dir = Scratch::new("report-self");
+    let out = dir.text("out");
+    let tiny = ["--users", "1", "--trials", "1", "--steps", "20"];
+    let reduced = ["--scenarios", "push", "--replays", "data/leap/pinch.json.lz"];
+    let command = ["report", "--out", &out];
+    let args: Vec<&str> = command.iter().chain(&tiny).chain(&reduced).copied().collect();
+    let (code, stdout, stderr) = run(&args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.ends_with("accuracy: run, bench: run\n"), "{stdout}");
+    let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
+    assert!(!page.contains("class=\"absent\""), "a section says how to produce it");
+    assert!(page.contains(" build): 1 synthetic users × 1 trials, seed 1, methods coulomb,"));
+    assert!(page.contains(" build): 20 timed steps per figure; the reference scene with 16"));
+    // Every method's one trial, completed with an error on the board or
+    // counted as failed.
+    let diagonal_mm = SQUARES as f64 * SQUARE as f64 * 2f64.sqrt() * 1e3;
+    for method in ["coulomb", "thesis", "kinematic", "heuristic"] {
+        let cells = row(&page, method);
+        let count = |i: usize| cells[i].parse::<usize>().expect("a count");
+        assert_eq!(count(1) + count(5), 1, "{method}: {cells:?}");
+        if count(1) == 0 {
+            // No completed trial, so no error: not a zero one.
+            assert_eq!(cells[2], "— ± — / —", "{method}: {cells:?}");
+            continue;
+        }
+        let error = numbers(&cells[2]).expect("mean ± sd / median");
+        assert!(error.iter().all(|&e| (0.0..diagonal_mm).contains(&e)), "{method}: {cells:?}");
+    }
+    // Every sweep point and the reference scene timed: step times > 0.
+    let timed = |cells: &[String]| cells[1..].iter().filter_map(|c| numbers(c)).flatten().count();
+    for bones in SWEEP_BONES {
+        let cells = row(&page, &bones.to_string());
+        let full = numbers(&cells[5]).expect("a time");
+        assert!(full[0] > 0.0 && timed(&cells) == 6, "{bones} bones: {cells:?}");
+    }
+    for state in ["tower asleep", "tower awake"] {
+        let cells = row(&page, state);
+        assert!(timed(&cells) == 3 && numbers(&cells[3]).unwrap()[0] > 0.0, "{cells:?}");
+    }
+}
+
+#[test]
+fn no_accuracy_and_no_bench_leave_them_out() {
+    let dir = Scratch::new("report-skip");
+    let out = dir.text("out");
+    let (code, stdout, stderr) = run(&[
+        "report",
+        "--out",
+        &out,
+        "--no-accuracy",
+        "--no-bench",
+        "--scenarios",
+        "push",
+        "--replays",
+        "data/leap/pinch.json.lz",
+    ]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.ends_with("accuracy: skipped, bench: skipped\n"), "{stdout}");
+    let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
+    assert_eq!(page.matches("class=\"absent\"").count(), 2);
+    assert!(page.contains("--no-accuracy") && page.contains("--no-bench"));
+    assert!(!page.contains("synthetic users ×") && !page.contains("tower awake"));
 }

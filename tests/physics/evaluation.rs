@@ -16,7 +16,10 @@ fn every_method_completes_the_reduced_accuracy_study_with_errors_on_the_board() 
         for e in &m.errors_mm {
             assert!(e.is_finite() && *e >= 0.0 && *e < board_diagonal_mm, "{}: {e} mm", m.method);
         }
-        assert!(m.mean_time_s.is_finite() && m.mean_mm.is_finite(), "{}", m.method);
+        // A method with no completed trial has no error: not a number,
+        // not zero.
+        let finite = m.mean_time_s.is_finite() && m.mean_mm.is_finite();
+        assert_eq!(finite, !m.errors_mm.is_empty(), "{}", m.method);
         // A grip that holds a 40 g cube completes nearly every trial; the
         // thesis's law as written, an undamped spring, may not (README).
         if m.method != "thesis" {

@@ -5,9 +5,10 @@
 //!
 //! [`html`] is a pure function from a [`ReportData`] to the page's text.
 //! Every section is optional: a missing one says how to produce it. The
-//! data types here are plain numbers and text; whoever runs scenarios and
-//! replays (the `run` stage) or reads the study's and the benchmark's JSON
-//! ([`AccuracyStudy::load`], [`BenchReport::load`]) fills them in. Nothing
+//! data types here are plain numbers and text, and they are what the runs
+//! produce: `eval` builds the [`AccuracyStudy`], `run::bench` the
+//! [`BenchReport`] and the `run` stage the scenario and replay runs; their
+//! JSON reads back with [`AccuracyStudy::load`] and [`BenchReport::load`]. Nothing
 //! in the data can make the page builder panic: non-finite numbers are
 //! shown as `—`, they and any beyond 10¹² are left out of plots, and empty
 //! lists give empty plots.
@@ -133,7 +134,8 @@ pub fn thesis_name(method: &str) -> Option<&'static str> {
 /// contact.
 pub const THESIS_FIG_5_6: [(usize, f64); 2] = [(6, 600.0), (32, 1500.0)];
 
-/// `coulomb-hands bench --json`: step times.
+/// `coulomb-hands bench --json`: everything one bench run measured
+/// (`run::bench` writes it).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BenchReport {
     /// Step time against bones in contact.
@@ -144,55 +146,53 @@ pub struct BenchReport {
     pub mujoco: Option<MujocoStep>,
 }
 
-/// Step time at one number of bones in contact (µs per step).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+/// Step time at one number of bones in contact.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SweepPoint {
-    /// Bones in contact.
+    /// Bones pressing on a box (checked after the warm-up).
     pub bones: usize,
-    /// Hands.
+    /// Hands they belong to.
     pub hands: usize,
     /// Skin-patch samples per contact.
     pub samples_per_contact: usize,
-    /// The interaction layer (contacts and forces).
-    pub interaction_us: f64,
-    /// rapier's step.
-    pub rapier_us: f64,
-    /// The whole step.
-    pub full_us: f64,
+    /// The step times, as fields of the point itself in the JSON.
+    #[serde(flatten)]
+    pub times: StepTimes,
 }
 
-/// The three parts of a step (µs).
+/// µs per step, the interaction layer timed apart from rapier's step.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct StepTimes {
-    /// The interaction layer (contacts and forces).
+    /// Contacts and forces (`InteractionWorld::apply_hand_forces`).
     pub interaction_us: f64,
-    /// rapier's step.
+    /// rapier's step (`InteractionWorld::step_physics`).
     pub rapier_us: f64,
-    /// The whole step.
+    /// The whole step: both (the median block's sum).
     pub full_us: f64,
 }
 
 /// The reference scene: ground, tower and held boxes.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ReferenceScene {
-    /// Bones pressing on objects.
+    /// Bones pressing on a box at the end of the asleep run.
     pub bones_pressing: usize,
-    /// Objects in the scene.
+    /// Objects in the world (tower blocks and boxes).
     pub objects: usize,
-    /// With rapier's sleeping (the tower asleep).
+    /// With rapier's sleeping: the tower asleep, the held boxes awake.
     pub asleep: StepTimes,
-    /// With sleeping off (the tower awake).
+    /// With sleeping off: every object awake.
     pub awake: StepTimes,
-    /// A full step in the first second, while the tower settles (µs).
+    /// The mean full step over the first simulated second (sleeping on),
+    /// while the tower settles and falls asleep (µs).
     pub settling_us: f64,
 }
 
-/// MuJoCo's step on the reference scene.
+/// MuJoCo's step on the reference scene, beside ours.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct MujocoStep {
-    /// `mj_step` (µs).
+    /// µs per `mj_step`.
     pub step_us: f64,
-    /// The solver settings it ran with.
+    /// MuJoCo's settings (`run::bench::mujoco::SETTINGS`).
     pub settings: String,
     /// Our awake full step over MuJoCo's step.
     pub ratio_awake: f64,

@@ -56,11 +56,8 @@ pub fn html(data: &ReportData) -> String {
     p.push_str("</style>\n</head>\n<body>\n");
     header(&mut p, data);
     section(&mut p, 0, data.accuracy.as_ref(), accuracy, |p| {
-        absent(
-            p,
-            "no accuracy study was given.",
-            Some((ACCURACY_COMMAND, "--accuracy accuracy.json")),
-        );
+        let how = ("--no-accuracy", ACCURACY_COMMAND, "--accuracy accuracy.json");
+        absent(p, "the accuracy study was left out.", Some(how));
         p.push_str("<p>The thesis's Table 5.2 (placement error, mm):</p>\n");
         let rows: Vec<Vec<String>> = thesis_rows(None)
             .iter()
@@ -69,7 +66,8 @@ pub fn html(data: &ReportData) -> String {
         table(p, &["method", "thesis: mean ± sd / median (mm)"], &rows);
     });
     section(&mut p, 1, data.bench.as_ref(), performance, |p| {
-        absent(p, "no benchmark was given.", Some((BENCH_COMMAND, "--bench bench.json")));
+        let how = ("--no-bench", BENCH_COMMAND, "--bench bench.json");
+        absent(p, "the benchmark was left out.", Some(how));
         let _ = writeln!(p, "<p>{}</p>", escape(&thesis_fig_5_6()));
     });
     section(&mut p, 2, data.scenarios.as_ref(), scenarios, |p| {
@@ -171,13 +169,16 @@ fn section<T>(
     p.push_str("</section>\n");
 }
 
-fn absent(p: &mut String, why: &str, command: Option<(&str, &str)>) {
+/// A missing section's note; `how` is the option that left it out, and the
+/// command and option that give it from a file.
+fn absent(p: &mut String, why: &str, how: Option<(&str, &str, &str)>) {
     let _ = write!(p, "<p class=\"absent\">Not in this report: {}", escape(why));
-    if let Some((command, option)) = command {
+    if let Some((skip, command, option)) = how {
         let _ = write!(
             p,
-            " Produce it with <code>{}</code> and pass <code>{}</code> to \
-             <code>coulomb-hands report</code>.",
+            " Run <code>coulomb-hands report</code> without <code>{}</code>, or produce it \
+             with <code>{}</code> and pass <code>{}</code>.",
+            escape(skip),
             escape(command),
             escape(option)
         );
@@ -321,14 +322,15 @@ fn performance(p: &mut String, b: &BenchReport) {
     let rows: Vec<Vec<String>> = sweep
         .iter()
         .map(|s| {
-            let per_bone = if s.bones > 0 { s.full_us / s.bones as f64 } else { f64::NAN };
+            let t = s.times;
+            let per_bone = if s.bones > 0 { t.full_us / s.bones as f64 } else { f64::NAN };
             vec![
                 format!("#{}", s.bones),
                 format!("#{}", s.hands),
                 format!("#{}", s.samples_per_contact),
-                cell(s.interaction_us, 1),
-                cell(s.rapier_us, 1),
-                cell(s.full_us, 1),
+                cell(t.interaction_us, 1),
+                cell(t.rapier_us, 1),
+                cell(t.full_us, 1),
                 cell(per_bone, 2),
             ]
         })

@@ -266,7 +266,7 @@ fn draw_box<'a>(
 fn sweep_lines(sweep: &[SweepPoint]) -> Vec<Line<'static>> {
     let mut points: Vec<&SweepPoint> = sweep.iter().collect();
     points.sort_by_key(|p| (p.bones, p.hands));
-    let part = |p: &SweepPoint, i: usize| [p.interaction_us, p.rapier_us, p.full_us][i];
+    let part = |p: &SweepPoint, i: usize| parts(&p.times)[i].0;
     PARTS
         .iter()
         .enumerate()
@@ -407,6 +407,7 @@ pub(super) fn reference_bars(bench: &BenchReport) -> String {
     })
 }
 
+/// A step's three parts with their colours, in [`PARTS`]' order.
 fn parts(t: &super::StepTimes) -> Vec<(f64, RGBColor)> {
     vec![(t.interaction_us, BLUE), (t.rapier_us, ORANGE), (t.full_us, GREEN)]
 }

@@ -144,9 +144,9 @@ fn bad_numbers_and_empty_data_neither_panic_nor_lose_plots() {
     study.methods[0].errors_mm = vec![f64::NAN, f64::INFINITY, -3.0, 1e300, f64::MAX];
     study.thesis.clear();
     let bench = &mut data.bench.as_mut().unwrap().data;
-    bench.sweep[0].full_us = f64::NAN;
-    bench.sweep[1].interaction_us = -1.0;
-    bench.sweep[1].rapier_us = f64::MAX;
+    bench.sweep[0].times.full_us = f64::NAN;
+    bench.sweep[1].times.interaction_us = -1.0;
+    bench.sweep[1].times.rapier_us = f64::MAX;
     bench.reference.asleep.rapier_us = f64::MAX;
     bench.reference.awake.full_us = 0.0;
     bench.mujoco.as_mut().unwrap().step_us = f64::INFINITY;

@@ -22,6 +22,7 @@
 pub mod mujoco;
 mod scene;
 
+pub use crate::output::report::{BenchReport, MujocoStep, ReferenceScene, StepTimes, SweepPoint};
 pub use scene::{BOXES_PER_HAND, MAX_HANDS, held_boxes_scene, sweep_scene};
 
 use super::RunError;
@@ -74,71 +75,6 @@ impl BenchOptions {
 /// The steps of one simulated second at the default 1 ms step.
 const ONE_SECOND: usize = 1000;
 
-/// µs per step, the interaction layer timed apart from rapier's step.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct StepTimes {
-    /// Contacts and forces ([`InteractionWorld::apply_hand_forces`]).
-    pub interaction_us: f64,
-    /// rapier's step ([`InteractionWorld::step_physics`]).
-    pub rapier_us: f64,
-    /// The whole step: both (the median block's sum).
-    pub full_us: f64,
-}
-
-/// One point of the sweep.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct SweepRow {
-    /// Bones pressing on a box (checked after the warm-up).
-    pub bones: usize,
-    /// Hands they belong to.
-    pub hands: usize,
-    /// Skin-patch samples per contact.
-    pub samples_per_contact: usize,
-    /// The step times.
-    #[serde(flatten)]
-    pub times: StepTimes,
-}
-
-/// The reference scene's figures.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Reference {
-    /// Bones pressing on a box at the end of the asleep run.
-    pub bones_pressing: usize,
-    /// Objects in the world (tower blocks and boxes).
-    pub objects: usize,
-    /// With rapier's sleeping: the tower asleep, the held boxes awake.
-    pub asleep: StepTimes,
-    /// With sleeping off: every object awake.
-    pub awake: StepTimes,
-    /// The mean full step over the first simulated second (sleeping on),
-    /// while the tower settles and falls asleep.
-    pub settling_us: f64,
-}
-
-/// MuJoCo's step on the reference scene, beside ours.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct MujocoFigures {
-    /// µs per `mj_step`.
-    pub step_us: f64,
-    /// MuJoCo's settings ([`mujoco::SETTINGS`]).
-    pub settings: String,
-    /// Our awake full step over MuJoCo's step.
-    pub ratio_awake: f64,
-    /// Our asleep full step over MuJoCo's step.
-    pub ratio_asleep: f64,
-}
-
-/// Everything `bench` measured in one run.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct BenchReport {
-    /// The sweep, by [`SWEEP_BONES`].
-    pub sweep: Vec<SweepRow>,
-    /// The reference scene.
-    pub reference: Reference,
-    /// MuJoCo's figures, if asked for.
-    pub mujoco: Option<MujocoFigures>,
-}
-
 /// Why a bench run failed.
 #[derive(Debug, thiserror::Error)]
 pub enum BenchError {
@@ -182,13 +118,13 @@ pub fn run(
             return Err(BenchError::NotPressing { bones, pressing });
         }
         let times = time_split(&mut world, options.steps, progress)?;
-        sweep.push(SweepRow { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
+        sweep.push(SweepPoint { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
     }
     let reference = reference(options, progress)?;
     let mujoco = match &options.mujoco {
         Some(python) => {
             let run = mujoco::run(python, options.steps, options.boxes, options.tower)?;
-            Some(MujocoFigures {
+            Some(MujocoStep {
                 step_us: run.step_us,
                 settings: run.settings,
                 ratio_awake: reference.awake.full_us / run.step_us,
@@ -204,7 +140,7 @@ pub fn run(
 fn reference(
     options: &BenchOptions,
     progress: &mut dyn FnMut(u64),
-) -> Result<Reference, BenchError> {
+) -> Result<ReferenceScene, BenchError> {
     let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
     let start = Instant::now();
     steps(&mut world, ONE_SECOND, progress)?;
@@ -216,7 +152,7 @@ fn reference(
     keep_awake(&mut world);
     steps(&mut world, WARM_UP, progress)?;
     let awake = time_split(&mut world, options.steps, progress)?;
-    Ok(Reference { bones_pressing, objects, asleep, awake, settling_us })
+    Ok(ReferenceScene { bones_pressing, objects, asleep, awake, settling_us })
 }
 
 /// Steps `world` `n` times through the driver loop, untimed.
@@ -376,15 +312,17 @@ mod tests {
     #[test]
     fn the_json_has_the_reports_shape() {
         let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
-        let row = SweepRow { bones: 6, hands: 1, samples_per_contact: 8, times };
-        let reference = Reference {
+        let row = SweepPoint { bones: 6, hands: 1, samples_per_contact: 8, times };
+        let reference = ReferenceScene {
             bones_pressing: 32,
             objects: 70,
             asleep: times,
             awake: times,
             settling_us: 4.0,
         };
-        let report = BenchReport { sweep: vec![row], reference, mujoco: None };
+        let settings = mujoco::SETTINGS.to_string();
+        let step = MujocoStep { step_us: 700.0, settings, ratio_awake: 0.5, ratio_asleep: 0.25 };
+        let report = BenchReport { sweep: vec![row], reference, mujoco: Some(step) };
         let json = serde_json::to_value(&report).unwrap();
         let expected = serde_json::json!({
             "sweep": [{"bones": 6, "hands": 1, "samples_per_contact": 8,
@@ -393,7 +331,8 @@ mod tests {
                           "asleep": {"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0},
                           "awake": {"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0},
                           "settling_us": 4.0},
-            "mujoco": null
+            "mujoco": {"step_us": 700.0, "settings": mujoco::SETTINGS,
+                       "ratio_awake": 0.5, "ratio_asleep": 0.25}
         });
         assert_eq!(json, expected);
         assert_eq!(serde_json::from_value::<BenchReport>(json).unwrap(), report);
