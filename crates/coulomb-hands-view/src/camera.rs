@@ -1,0 +1,141 @@
+//! An orbit camera: left-drag turns it about its focus, the wheel zooms,
+//! middle-drag pans. It first frames the objects, or else the tracked hands.
+
+use bevy::core_pipeline::tonemapping::Tonemapping;
+use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
+use bevy::prelude::*;
+use coulomb_hands::hand::HandId;
+use coulomb_hands_bevy::convert::to_bevy_vec3;
+use coulomb_hands_bevy::interaction::Interaction;
+
+/// Radians of turn per pixel of drag.
+const TURN_PER_PIXEL: f32 = 0.005;
+/// Zoom factor per wheel line.
+const ZOOM_PER_LINE: f32 = 0.1;
+
+/// Where the camera looks from.
+#[derive(Component, Debug, Clone, Copy)]
+pub struct Orbit {
+    /// The point looked at (world, m).
+    pub focus: Vec3,
+    /// Turn about the vertical (rad); 0 looks along +z.
+    pub yaw: f32,
+    /// Elevation above the horizontal (rad).
+    pub pitch: f32,
+    /// Distance from the focus (m).
+    pub distance: f32,
+    /// Whether the focus has been put on what is viewed.
+    framed: bool,
+}
+
+impl Orbit {
+    /// The camera's transform.
+    pub fn transform(&self) -> Transform {
+        let back = Quat::from_euler(EulerRot::YXZ, self.yaw, self.pitch, 0.0) * Vec3::NEG_Z;
+        Transform::from_translation(self.focus + back * self.distance)
+            .looking_at(self.focus, Vec3::Y)
+    }
+}
+
+impl Default for Orbit {
+    fn default() -> Self {
+        Orbit {
+            focus: Vec3::new(0.0, 0.05, 0.0),
+            yaw: 0.0,
+            pitch: 0.55,
+            distance: 0.55,
+            framed: false,
+        }
+    }
+}
+
+/// Where the camera starts: yaw and pitch (degrees), distance (m).
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct StartView {
+    /// Turn about the vertical (°); 0 looks along +z, 90 along −x.
+    pub yaw_deg: f32,
+    /// Elevation above the horizontal (°).
+    pub pitch_deg: f32,
+    /// Distance from what is looked at (m).
+    pub distance: f32,
+}
+
+impl std::str::FromStr for StartView {
+    type Err = String;
+    /// `YAW,PITCH,DISTANCE`, e.g. `90,20,0.5`.
+    fn from_str(s: &str) -> Result<StartView, String> {
+        let parts: Vec<f32> = s.split(',').filter_map(|p| p.trim().parse().ok()).collect();
+        match parts[..] {
+            [yaw_deg, pitch_deg, distance]
+                if parts.iter().all(|p| p.is_finite())
+                    && pitch_deg.abs() <= 80.0
+                    && (0.1..=10.0).contains(&distance) =>
+            {
+                Ok(StartView { yaw_deg, pitch_deg, distance })
+            }
+            _ => Err(format!(
+                "expected YAW_DEG,PITCH_DEG,DISTANCE_M with pitch within ±80° and distance \
+                 0.1 to 10 m, got {s:?}"
+            )),
+        }
+    }
+}
+
+/// The camera, with a tone mapping that needs no lookup tables.
+pub fn spawn_camera(mut commands: Commands, start: Option<Res<StartView>>) {
+    let mut orbit = Orbit::default();
+    if let Some(v) = start {
+        (orbit.yaw, orbit.pitch) = (v.yaw_deg.to_radians(), v.pitch_deg.to_radians());
+        orbit.distance = v.distance;
+    }
+    commands.spawn((Camera3d::default(), Tonemapping::AcesFitted, orbit.transform(), orbit));
+}
+
+/// Puts the focus on the objects' centre, or on the first tracked palm,
+/// once there is one.
+pub fn frame_view(interaction: Option<NonSend<Interaction>>, mut orbits: Query<&mut Orbit>) {
+    let Some(interaction) = interaction else { return };
+    let world = interaction.world();
+    for mut orbit in orbits.iter_mut().filter(|o| !o.framed) {
+        let objects: Vec<Vec3> = world
+            .object_ids()
+            .filter_map(|id| world.object_state(id).ok())
+            .map(|s| to_bevy_vec3(s.position))
+            .collect();
+        let palm = (0..world.hand_count())
+            .find_map(|i| world.hand_pose(HandId(i as u32)))
+            .map(|p| to_bevy_vec3(p.palm.center));
+        if !objects.is_empty() {
+            orbit.focus = objects.iter().sum::<Vec3>() / objects.len() as f32;
+        } else if let Some(palm) = palm {
+            orbit.focus = palm;
+        } else {
+            continue;
+        }
+        orbit.framed = true;
+    }
+}
+
+/// Turns, zooms and pans from the mouse.
+pub fn orbit_camera(
+    buttons: Res<ButtonInput<MouseButton>>,
+    motion: Res<AccumulatedMouseMotion>,
+    scroll: Res<AccumulatedMouseScroll>,
+    scrubbing: Res<crate::hud::Scrubbing>,
+    mut cameras: Query<(&mut Orbit, &mut Transform)>,
+) {
+    for (mut orbit, mut transform) in &mut cameras {
+        let d = motion.delta;
+        if buttons.pressed(MouseButton::Left) && !scrubbing.0 {
+            orbit.yaw -= d.x * TURN_PER_PIXEL;
+            orbit.pitch = (orbit.pitch + d.y * TURN_PER_PIXEL).clamp(-1.4, 1.4);
+        }
+        if buttons.pressed(MouseButton::Middle) {
+            let pan = (transform.right() * -d.x + transform.up() * d.y) * orbit.distance * 0.002;
+            orbit.focus += pan;
+        }
+        orbit.distance =
+            (orbit.distance * (-scroll.delta.y * ZOOM_PER_LINE).exp()).clamp(0.1, 10.0);
+        *transform = orbit.transform();
+    }
+}

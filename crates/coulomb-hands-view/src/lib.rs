@@ -1,0 +1,138 @@
+//! coulomb-hands-view: a window onto an interaction, with the thesis's hand
+//! visualization (§3.6), force and motion arrows (Fig. 1.1), a HUD,
+//! playback controls and a hand driven by mouse and keyboard.
+//!
+//! The data path is the plugin's ([`coulomb_hands_bevy`]): the interaction
+//! steps once per fixed tick, whatever the frame rate; this crate only
+//! draws it ([`stage`], [`hand_visual`], [`arrows`], [`hud`]), decides
+//! whether a tick steps ([`transport`]), and poses the mouse hand
+//! ([`mouse_hand`]).
+
+pub mod arrows;
+pub mod camera;
+pub mod display;
+pub mod hand_visual;
+pub mod hud;
+pub mod mouse_hand;
+pub mod ready;
+pub mod shapes;
+pub mod source;
+pub mod stage;
+pub mod transport;
+
+use bevy::app::{RunFixedMainLoop, RunFixedMainLoopSystems};
+use bevy::prelude::*;
+use coulomb_hands::pipeline::Method;
+use coulomb_hands_bevy::{CoulombHandsPlugin, InteractionSystems};
+use source::{LoadError, Source};
+use transport::{Shot, Transport, Viewed};
+
+/// What to show and how.
+#[derive(Debug, Clone)]
+pub struct Viewer {
+    /// The input.
+    pub source: Source,
+    /// How hands move objects.
+    pub method: Method,
+    /// Screenshots to save at simulated times.
+    pub shots: Vec<Shot>,
+    /// Quit once this simulated time is reached (s).
+    pub exit_after: Option<f64>,
+    /// Start paused.
+    pub paused: bool,
+    /// Where the camera starts, if not the default.
+    pub view: Option<camera::StartView>,
+    /// Whether the raw skeleton is shown at first.
+    pub skeleton: bool,
+}
+
+impl Viewer {
+    /// The app: a window, the plugin, and the viewer's systems, with the
+    /// interaction built and ready at t = 0.
+    pub fn app(self) -> Result<App, LoadError> {
+        let (interaction, inlet) = self.source.build(self.method)?;
+        let mut transport = Transport::new(self.source.duration(), self.shots, self.exit_after);
+        transport.paused = self.paused;
+        let mut hand = mouse_hand::MouseHand::default();
+        hand.attach(inlet);
+        let window = Window {
+            title: format!("coulomb-hands-view: {}", self.source.name()),
+            resolution: (1280u32, 720u32).into(),
+            ..default()
+        };
+        let mut app = App::new();
+        app.add_plugins((
+            DefaultPlugins.set(WindowPlugin { primary_window: Some(window), ..default() }),
+            CoulombHandsPlugin,
+            ViewerPlugin,
+            ready::RendererReadyPlugin,
+        ))
+        .insert_non_send(interaction)
+        .insert_resource(transport)
+        .insert_resource(hand)
+        .insert_resource(Viewed { source: self.source, method: self.method });
+        app.insert_resource(arrows::ShowSkeleton(self.skeleton));
+        if let Some(view) = self.view {
+            app.insert_resource(view);
+        }
+        Ok(app)
+    }
+}
+
+/// The viewer's systems (it expects [`Transport`], [`Viewed`] and
+/// [`mouse_hand::MouseHand`] inserted, and the plugin added).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ViewerPlugin;
+
+impl Plugin for ViewerPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<hand_visual::DrawnHands>()
+            .init_resource::<arrows::ShowSkeleton>()
+            .init_resource::<arrows::ContactMotion>()
+            .init_resource::<stage::Scenery>()
+            .init_resource::<hud::StepTimer>()
+            .init_resource::<hud::Scrubbing>()
+            .configure_sets(FixedUpdate, InteractionSystems::Step.run_if(transport::may_step))
+            .add_systems(
+                FixedUpdate,
+                (
+                    hud::start_step.before(InteractionSystems::Step),
+                    (hud::stop_step, transport::spend_single_step).after(InteractionSystems::Step),
+                ),
+            )
+            .add_systems(
+                RunFixedMainLoop,
+                (
+                    hud::start_fixed_loop.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+                    hud::stop_fixed_loop.in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+                ),
+            )
+            .add_systems(
+                Startup,
+                (camera::spawn_camera, stage::setup_lights, arrows::setup_gizmos, hud::spawn_hud),
+            )
+            .add_systems(
+                Update,
+                (
+                    (transport::playback_keys, hud::scrub_timeline, transport::seek).chain(),
+                    arrows::toggle_skeleton,
+                    mouse_hand::drive_mouse_hand,
+                    (camera::frame_view, camera::orbit_camera).chain(),
+                ),
+            )
+            .add_systems(
+                Update,
+                (
+                    stage::dress_scenery,
+                    stage::dress_objects,
+                    hand_visual::draw_hands,
+                    arrows::draw_arrows,
+                    arrows::draw_skeleton,
+                    hud::update_hud,
+                    transport::take_shots,
+                    transport::exit_when_done,
+                )
+                    .after(transport::seek),
+            );
+    }
+}

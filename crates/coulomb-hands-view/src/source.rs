@@ -1,0 +1,173 @@
+//! What the viewer shows: a shipped or filed scenario, a tracking recording,
+//! or a scene driven by the mouse-and-keyboard hand. Each is loaded and
+//! checked once, by the core's own loaders (so a bad file is the same error
+//! as in the CLI), and can build a fresh [`Interaction`] from the start any
+//! number of times: a timeline scrub back in time replays from t = 0, which
+//! is exact because a run is deterministic.
+
+use coulomb_hands::hand::Side;
+use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
+use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld, Method};
+use coulomb_hands::run::closing::Closings;
+use coulomb_hands::run::replay::{GraspObject, replay_world};
+use coulomb_hands::run::scenario::{Scenario, ScenarioHand};
+use coulomb_hands::scene::Scene;
+use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::sources::{HandInlet, PushedHand};
+use std::path::Path;
+
+/// The scene the viewer opens with no argument: a few objects on a table
+/// for the mouse hand to push, grasp and lift.
+pub const DESK: &str = include_str!("../scenes/desk.json");
+
+/// Why the viewer could not load its input: the core's message, naming the
+/// file and where.
+pub type LoadError = Box<dyn std::error::Error + Send + Sync>;
+
+/// A loaded input.
+#[derive(Debug, Clone)]
+pub enum Source {
+    /// A scenario: its scene and scripted or recorded hands.
+    Scenario(Box<Scenario>),
+    /// A tracking recording, played in an optional scene, with an object
+    /// put at each closing of a hand when asked (as `replay --object-at-grasp`).
+    Recording {
+        /// The file's name, for the HUD.
+        name: String,
+        /// The recording on the world's clock.
+        playback: Box<Playback>,
+        /// Static scenery and objects around it.
+        scene: Option<Scene>,
+        /// The object for each closing.
+        object: Option<GraspObject>,
+    },
+    /// A scene with one hand driven by mouse and keyboard.
+    Scene {
+        /// The file's name, for the HUD.
+        name: String,
+        /// What is in it.
+        scene: Scene,
+    },
+}
+
+/// How to load: the method and the extras a recording may take.
+#[derive(Debug, Clone, Default)]
+pub struct LoadOptions {
+    /// How hands move objects.
+    pub method: Method,
+    /// Scenery for a recording.
+    pub scene: Option<std::path::PathBuf>,
+    /// An object at each closing of a recording.
+    pub object_at_grasp: Option<GraspObject>,
+}
+
+impl Source {
+    /// Loads `input`: nothing (the desk scene), a shipped scenario's name,
+    /// or a file. A file is a recording if the core's recording loader
+    /// knows its format (`.json.lz`, `.jsonl`, a Leap JSON), a scenario if
+    /// it has `hands`, else a scene.
+    pub fn load(input: Option<&str>, options: &LoadOptions) -> Result<Source, LoadError> {
+        let Some(input) = input else {
+            let scene = Scene::parse("scenes/desk.json", DESK)?;
+            return Ok(Source::Scene { name: "desk".into(), scene });
+        };
+        if !Path::new(input).exists() || is_scenario(input) {
+            return Ok(Source::Scenario(Box::new(Scenario::find(input)?)));
+        }
+        if is_recording(input) {
+            let recording = coulomb_hands::input::recording::load(Path::new(input))?;
+            let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
+            let scene = options.scene.as_deref().map(Scene::load).transpose()?;
+            let name = recording.source_name.clone();
+            let object = options.object_at_grasp;
+            return Ok(Source::Recording { name, playback: Box::new(playback), scene, object });
+        }
+        Ok(Source::Scene { name: input.to_string(), scene: Scene::load(Path::new(input))? })
+    }
+
+    /// A name for the HUD.
+    pub fn name(&self) -> &str {
+        match self {
+            Source::Scenario(s) => &s.name,
+            Source::Recording { name, .. } | Source::Scene { name, .. } => name,
+        }
+    }
+
+    /// How long it plays (s), or `None` for a scene, which runs until
+    /// closed.
+    pub fn duration(&self) -> Option<f64> {
+        match self {
+            Source::Scenario(s) => Some(f64::from(s.duration)),
+            Source::Recording { playback, .. } => Some(playback.duration),
+            Source::Scene { .. } => None,
+        }
+    }
+
+    /// A fresh interaction at t = 0 under `method`, and the inlet of its
+    /// mouse hand if it has one.
+    pub fn build(&self, method: Method) -> Result<(Interaction, Option<HandInlet>), LoadError> {
+        match self {
+            Source::Scenario(s) => {
+                let mut scenario = (**s).clone();
+                scenario.config = method.config(scenario.config);
+                Ok((Interaction::of_scenario(&scenario)?, None))
+            }
+            Source::Recording { playback, scene, object, .. } => {
+                // The CLI's replay world: a ground at y = 0, then the scene.
+                let mut interaction = Interaction::new(world(scene.as_ref(), method, true)?);
+                for track in 0..playback.tracks.len() {
+                    interaction
+                        .add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
+                }
+                if let Some(object) = object {
+                    interaction.observe(Closings::new(playback, *object)?);
+                }
+                Ok((interaction, None))
+            }
+            Source::Scene { scene, .. } => {
+                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
+                let (hand, inlet) = PushedHand::new(Side::Right);
+                interaction.add_hand(hand);
+                Ok((interaction, Some(inlet)))
+            }
+        }
+    }
+}
+
+/// A world under `method` with `scene` in it, on the replays' ground at
+/// y = 0 if `ground`.
+fn world(
+    scene: Option<&Scene>,
+    method: Method,
+    ground: bool,
+) -> Result<InteractionWorld, LoadError> {
+    let mut config = method.config(InteractionConfig::default());
+    if let Some(scene) = scene {
+        config = config.with_scene(scene);
+    }
+    let mut world = match ground {
+        true => replay_world(config, false)?,
+        false => InteractionWorld::new(config)?,
+    };
+    if let Some(scene) = scene {
+        world.add_scene(scene)?;
+    }
+    Ok(world)
+}
+
+/// Whether the file at `path` is a scenario: a JSON object with `hands`.
+fn is_scenario(path: &str) -> bool {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    serde_json::from_str::<serde_json::Value>(&text).is_ok_and(|v| v.get("hands").is_some())
+}
+
+/// Whether the file at `path` is a tracking recording: compressed or JSON
+/// lines by its name, or a Leap recording's JSON (`frames` or `metadata`).
+fn is_recording(path: &str) -> bool {
+    if path.ends_with(".lz") || path.ends_with(".jsonl") {
+        return true;
+    }
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    serde_json::from_str::<serde_json::Value>(&text)
+        .is_ok_and(|v| v.get("frames").is_some() || v.get("metadata").is_some())
+}

@@ -1,0 +1,298 @@
+//! Playback: pause, single step, speed, seeking on the timeline, the end of
+//! a scenario or recording, screenshots at chosen simulated times, and
+//! quitting after one.
+//!
+//! The plugin steps the physics once per fixed tick; the transport only
+//! decides whether a tick steps ([`may_step`], a run condition on the
+//! plugin's step set), so the physics of a viewed run is the headless
+//! run's, step for step. Speed scales Bevy's virtual clock. A seek back in
+//! time rebuilds the interaction from t = 0 and steps it to the target in
+//! one frame, which is exact because runs are deterministic.
+
+use crate::ready::RendererReady;
+use crate::source::Source;
+use bevy::diagnostic::FrameCount;
+use bevy::prelude::*;
+use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
+use coulomb_hands::pipeline::Method;
+use coulomb_hands_bevy::interaction::{Interaction, Stopped};
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+/// Playback speeds (× real time) the `[` and `]` keys move between.
+pub const SPEEDS: [f32; 9] = [0.0625, 0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
+
+/// A screenshot to save when the simulated time reaches `at`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shot {
+    /// Simulated time (s).
+    pub at: f64,
+    /// A PNG file to write.
+    pub path: PathBuf,
+}
+
+impl std::str::FromStr for Shot {
+    type Err = String;
+    /// `T=PATH`: a time in seconds and a `.png` file.
+    fn from_str(s: &str) -> Result<Shot, String> {
+        let (t, path) = s.split_once('=').ok_or(format!("expected T=PATH.png, got {s:?}"))?;
+        let at = t.trim().parse::<f64>().ok().filter(|t| t.is_finite() && *t >= 0.0);
+        let at = at.ok_or(format!("{t:?} is not a time in seconds ≥ 0"))?;
+        if !path.ends_with(".png") {
+            return Err(format!("screenshots are PNG files; {path:?} does not end in .png"));
+        }
+        Ok(Shot { at, path: PathBuf::from(path) })
+    }
+}
+
+/// What is viewed, kept to rebuild the interaction on a seek back or a
+/// restart.
+#[derive(Resource, Debug, Clone)]
+pub struct Viewed {
+    /// The loaded input.
+    pub source: Source,
+    /// How hands move objects.
+    pub method: Method,
+}
+
+/// The playback state.
+#[derive(Resource, Debug, Clone)]
+pub struct Transport {
+    /// Whether stepping is paused.
+    pub paused: bool,
+    /// Index into [`SPEEDS`].
+    pub speed: usize,
+    /// One step is due although paused.
+    step_once: bool,
+    /// A time to go to (s), set by the keys or the timeline.
+    pub seek: Option<f64>,
+    /// The end of a scenario or recording (s); a scene has none.
+    pub end: Option<f64>,
+    /// Screenshots still to take, in time order.
+    shots: VecDeque<Shot>,
+    /// Frames the first shot has waited, held at its time.
+    shot_frames: u32,
+    /// Quit once this simulated time is reached and the shots are saved.
+    pub exit_after: Option<f64>,
+}
+
+impl Transport {
+    /// Playing at 1×, to `end`, with `shots` to take.
+    pub fn new(end: Option<f64>, mut shots: Vec<Shot>, exit_after: Option<f64>) -> Transport {
+        shots.sort_by(|a, b| a.at.total_cmp(&b.at));
+        let speed = SPEEDS.iter().position(|s| *s == 1.0).unwrap_or(0);
+        Transport {
+            paused: false,
+            speed,
+            step_once: false,
+            seek: None,
+            end,
+            shots: shots.into(),
+            shot_frames: 0,
+            exit_after,
+        }
+    }
+
+    /// The playback speed (× real time).
+    pub fn speed(&self) -> f32 {
+        SPEEDS[self.speed]
+    }
+
+    /// Whether the physics may step from time `t` (s) with step `dt`: not
+    /// paused (or one step asked for), not at the end or the time to quit,
+    /// and not at a screenshot's time.
+    pub fn allows_step(&self, t: f64, dt: f64) -> bool {
+        let reached = |at: f64| t >= at - dt / 2.0;
+        let stop = self.end.is_some_and(reached) || self.exit_after.is_some_and(reached);
+        if stop || self.shots.front().is_some_and(|s| reached(s.at)) {
+            return false;
+        }
+        !self.paused || self.step_once
+    }
+}
+
+/// The run condition of the plugin's step set; with a renderer, the run
+/// starts once it draws everything ([`RendererReady`]).
+pub fn may_step(
+    transport: Res<Transport>,
+    interaction: Option<NonSend<Interaction>>,
+    renderer: Option<Res<RendererReady>>,
+) -> bool {
+    if renderer.is_some_and(|r| !r.started) {
+        return false;
+    }
+    interaction.is_some_and(|i| {
+        let world = i.world();
+        transport.allows_step(world.time(), f64::from(world.config().dt))
+    })
+}
+
+/// After a fixed tick: a single step is used up.
+pub fn spend_single_step(mut transport: ResMut<Transport>) {
+    transport.step_once = false;
+}
+
+/// The playback keys: Space pauses, `.` steps once (pausing), `[` and `]`
+/// halve and double the speed, ← and → go back and on by a second, Home
+/// restarts.
+pub fn playback_keys(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut transport: ResMut<Transport>,
+    mut time: ResMut<Time<Virtual>>,
+    interaction: Option<NonSend<Interaction>>,
+) {
+    let now = interaction.map_or(0.0, |i| i.world().time());
+    let t = &mut *transport;
+    if keys.just_pressed(KeyCode::Space) {
+        t.paused = !t.paused;
+    }
+    if keys.just_pressed(KeyCode::Period) {
+        (t.paused, t.step_once) = (true, true);
+    }
+    if keys.just_pressed(KeyCode::BracketLeft) {
+        t.speed = t.speed.saturating_sub(1);
+    }
+    if keys.just_pressed(KeyCode::BracketRight) {
+        t.speed = (t.speed + 1).min(SPEEDS.len() - 1);
+    }
+    if keys.just_pressed(KeyCode::ArrowLeft) {
+        t.seek = Some((now - 1.0).max(0.0));
+    }
+    if keys.just_pressed(KeyCode::ArrowRight) {
+        t.seek = Some(now + 1.0);
+    }
+    if keys.just_pressed(KeyCode::Home) {
+        t.seek = Some(0.0);
+    }
+    if time.relative_speed() != t.speed() {
+        time.set_relative_speed(t.speed());
+    }
+}
+
+/// Goes to the time asked for: back by rebuilding from t = 0, then on by
+/// stepping, all in this frame (clamped to the end).
+pub fn seek(
+    mut transport: ResMut<Transport>,
+    viewed: Res<Viewed>,
+    interaction: Option<NonSendMut<Interaction>>,
+    mut inlet: ResMut<crate::mouse_hand::MouseHand>,
+) {
+    let (Some(target), Some(mut interaction)) = (transport.seek.take(), interaction) else {
+        return;
+    };
+    let target = transport.end.map_or(target, |end| target.min(end));
+    let dt = f64::from(interaction.world().config().dt);
+    if target < interaction.world().time() - dt / 2.0 {
+        match viewed.source.build(viewed.method) {
+            Ok((fresh, hand)) => {
+                *interaction = fresh;
+                inlet.attach(hand);
+            }
+            Err(e) => {
+                error!("could not restart: {e}");
+                return;
+            }
+        }
+    }
+    while interaction.world().time() < target - dt / 2.0 && interaction.step() {}
+}
+
+/// Takes the next screenshot once the physics is held at its time and a
+/// few frames have drawn that state with every pipeline ready.
+pub fn take_shots(
+    mut transport: ResMut<Transport>,
+    interaction: Option<NonSend<Interaction>>,
+    renderer: Option<Res<RendererReady>>,
+    mut commands: Commands,
+) {
+    /// Frames drawn at the held state, ready, before the capture.
+    const SETTLE_FRAMES: u32 = 3;
+    let Some(interaction) = interaction else { return };
+    if renderer.is_some_and(|r| !r.ready()) && transport.shot_frames < SETTLE_FRAMES {
+        transport.shot_frames = 0;
+        return;
+    }
+    let world = interaction.world();
+    let (t, dt) = (world.time(), f64::from(world.config().dt));
+    let Some(shot) = transport.shots.front().cloned() else { return };
+    let at_end = transport.end.is_some_and(|end| t >= end - dt / 2.0);
+    if t < shot.at - dt / 2.0 && !at_end && interaction.stopped().is_none() {
+        return;
+    }
+    transport.shot_frames += 1;
+    if transport.shot_frames == SETTLE_FRAMES {
+        commands
+            .spawn(Screenshot::primary_window())
+            .observe(save_to_disk(shot.path.clone()))
+            .observe(|_: On<ScreenshotCaptured>, mut transport: ResMut<Transport>| {
+                transport.shots.pop_front();
+                transport.shot_frames = 0;
+            });
+    }
+}
+
+/// Quits once the time to quit after is reached (or the run cannot go on)
+/// and every screenshot is saved; a failed step exits with an error.
+pub fn exit_when_done(
+    transport: Res<Transport>,
+    interaction: Option<NonSend<Interaction>>,
+    frames: Res<FrameCount>,
+    time: Res<Time<Real>>,
+    timer: Res<crate::hud::StepTimer>,
+    mut exit: MessageWriter<AppExit>,
+) {
+    let (Some(after), Some(interaction)) = (transport.exit_after, interaction) else { return };
+    if let Some(Stopped::Failed(e)) = interaction.stopped() {
+        eprintln!("coulomb-hands-view: the run failed: {e}");
+        exit.write(AppExit::error());
+        return;
+    }
+    let world = interaction.world();
+    let (t, dt) = (world.time(), f64::from(world.config().dt));
+    let last = transport.end.map_or(after, |end| after.min(end));
+    let stuck = interaction.stopped().is_some();
+    if (t >= last - dt / 2.0 || stuck) && transport.shots.is_empty() {
+        let wall = time.elapsed_secs_f64();
+        eprintln!(
+            "coulomb-hands-view: {} frames in {wall:.1} s ({:.1} per s), {} physics steps of \
+             {:.1} µs ({:.1} µs per fixed tick)",
+            frames.0,
+            f64::from(frames.0) / wall,
+            interaction.steps(),
+            timer.mean_us,
+            timer.tick_us,
+        );
+        exit.write(AppExit::Success);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_shot_reads_its_time_and_png_path_and_refuses_others() {
+        let shot: Shot = "1.25=out/grasp.png".parse().expect("a shot");
+        assert_eq!(shot, Shot { at: 1.25, path: PathBuf::from("out/grasp.png") });
+        assert!("1.25".parse::<Shot>().unwrap_err().contains("T=PATH"));
+        assert!("-1=a.png".parse::<Shot>().unwrap_err().contains("≥ 0"));
+        assert!("NaN=a.png".parse::<Shot>().is_err());
+        assert!("2=a.jpg".parse::<Shot>().unwrap_err().contains("PNG"));
+    }
+
+    #[test]
+    fn stepping_holds_at_the_end_at_a_shot_and_while_paused() {
+        let dt = 0.001;
+        let shot = Shot { at: 0.5, path: PathBuf::from("a.png") };
+        let mut t = Transport::new(Some(2.0), vec![shot], None);
+        assert!(t.allows_step(0.3, dt));
+        assert!(!t.allows_step(0.4996, dt), "held at the shot's time");
+        t.shots.clear();
+        assert!(t.allows_step(0.4996, dt));
+        assert!(!t.allows_step(1.9995, dt), "held at the end");
+        t.paused = true;
+        assert!(!t.allows_step(1.0, dt));
+        t.step_once = true;
+        assert!(t.allows_step(1.0, dt), "one step while paused");
+    }
+}

@@ -1,0 +1,160 @@
+//! The viewer in a real window: under Xvfb with Mesa's software renderer
+//! (lavapipe), `grasp-lift` is shown and screenshots are saved at chosen
+//! simulated times, then read back:
+//!
+//! - at 0.5 s the hand is still coming down: no contact, so no red arrow
+//!   pixels, and the hand is drawn see-through;
+//! - at 2.5 s the hand holds the lifted cube: red force arrows, and the
+//!   hand drawn opaque.
+//!
+//! Pixels are told apart by colour: the hand is a light skin tone, the
+//! cube teal, the force arrows pure red, over a dark blue-grey scene.
+//!
+//! It needs `xvfb-run` and `mesa-vulkan-drivers` (README's set-up line).
+
+use image::RgbImage;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Where the screenshots go (kept for a look after the test).
+fn out_dir() -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("window");
+    std::fs::create_dir_all(&dir).expect("a directory for screenshots");
+    dir
+}
+
+/// Runs the viewer under `xvfb-run` with `args`; returns its stderr.
+fn view(args: &[&str]) -> (bool, String) {
+    let found = Command::new("xvfb-run").arg("--help").output().is_ok();
+    assert!(found, "xvfb-run is missing: install README's apt packages (xvfb mesa-vulkan-drivers)");
+    let out = Command::new("xvfb-run")
+        .args(["-a", "-s", "-screen 0 1280x720x24"])
+        .arg(env!("CARGO_BIN_EXE_coulomb-hands-view"))
+        .args(args)
+        .output()
+        .expect("xvfb-run runs");
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+/// Hue (degrees), saturation and value of a pixel, each of s and v in [0, 1].
+fn hsv(p: &image::Rgb<u8>) -> (f32, f32, f32) {
+    let [r, g, b] = p.0.map(|c| f32::from(c) / 255.0);
+    let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+    let d = max - min;
+    let h = if d == 0.0 {
+        0.0
+    } else if max == r {
+        60.0 * ((g - b) / d).rem_euclid(6.0)
+    } else if max == g {
+        60.0 * ((b - r) / d + 2.0)
+    } else {
+        60.0 * ((r - g) / d + 4.0)
+    };
+    (h, if max == 0.0 { 0.0 } else { d / max }, max)
+}
+
+/// Pixels whose hue (degrees), saturation and value pass `test`.
+fn count(img: &RgbImage, test: impl Fn(f32, f32, f32) -> bool) -> usize {
+    img.pixels().filter(|p| matches!(hsv(p), (h, s, v) if test(h, s, v))).count()
+}
+
+/// Pixels the force arrows' pure red: saturated, hue within 10° of red.
+fn red(img: &RgbImage) -> usize {
+    count(img, |h, s, v| !(10.0..=350.0).contains(&h) && s > 0.85 && v > 0.6)
+}
+
+/// The skin tone's hues (the drawn hand's colour is orange-ish).
+const SKIN_HUES: std::ops::Range<f32> = 12.0..45.0;
+
+/// Pixels of the opaque skin-toned hand: skin hues, clearly saturated and
+/// bright (the see-through hand mixes with the grey-blue scene behind it).
+fn opaque_skin(img: &RgbImage) -> usize {
+    count(img, |h, s, v| SKIN_HUES.contains(&h) && s > 0.25 && v > 0.55)
+}
+
+/// Pixels of any skin-toned hue, see-through or not.
+fn any_skin(img: &RgbImage) -> usize {
+    count(img, |h, s, v| SKIN_HUES.contains(&h) && s > 0.12 && v > 0.2)
+}
+
+/// Pixels of the teal cube.
+fn teal(img: &RgbImage) -> usize {
+    count(img, |h, s, v| (170.0..200.0).contains(&h) && s > 0.4 && v > 0.25)
+}
+
+/// Distinct colours, a blank image having one or two.
+fn colours(img: &RgbImage) -> usize {
+    let mut seen: Vec<[u8; 3]> = img.pixels().map(|p| p.0).collect();
+    seen.sort_unstable();
+    seen.dedup();
+    seen.len()
+}
+
+#[test]
+fn grasp_lift_draws_the_hand_see_through_then_opaque_with_force_arrows() {
+    let dir = out_dir();
+    let (before, holding) = (dir.join("grasp-lift-0.5s.png"), dir.join("grasp-lift-2.5s.png"));
+    let shot = |t: &str, p: &Path| format!("{t}={}", p.display());
+    let (ok, stderr) = view(&[
+        "grasp-lift",
+        "--screenshot",
+        &shot("0.5", &before),
+        "--screenshot",
+        &shot("2.5", &holding),
+        "--exit-after",
+        "2.5",
+    ]);
+    assert!(ok, "the viewer failed:\n{stderr}");
+    let before = image::open(&before).expect("the 0.5 s screenshot").to_rgb8();
+    let holding = image::open(&holding).expect("the 2.5 s screenshot").to_rgb8();
+    for img in [&before, &holding] {
+        assert!(colours(img) > 500, "not blank: {} colours", colours(img));
+        assert!(teal(img) > 400, "the cube is visible: {} teal pixels", teal(img));
+        assert!(any_skin(img) > 1000, "the hand is visible: {} skin pixels", any_skin(img));
+    }
+    assert_eq!(red(&before), 0, "no contact yet, no force arrow");
+    assert!(red(&holding) > 30, "force arrows while holding: {} red pixels", red(&holding));
+    let (free, held) = (opaque_skin(&before), opaque_skin(&holding));
+    assert!(held > 5 * free.max(100), "opaque in contact: {held} vs {free} bright skin pixels");
+}
+
+/// The viewer's stderr and exit status for `args`, without a window.
+/// `display` is the `DISPLAY` to set, or none.
+fn refused(args: &[&std::ffi::OsStr], display: Option<&str>) -> String {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_coulomb-hands-view"));
+    command.args(args).env_remove("WAYLAND_DISPLAY");
+    match display {
+        Some(d) => command.env("DISPLAY", d),
+        None => command.env_remove("DISPLAY"),
+    };
+    let out = command.output().expect("the viewer runs");
+    assert!(!out.status.success(), "{args:?} must fail");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(!stderr.contains("panicked"), "an error, not a panic: {stderr}");
+    stderr
+}
+
+#[test]
+fn a_missing_or_invalid_file_is_the_clis_error() {
+    let missing = "no/such/recording.json.lz";
+    let stderr = refused(&[missing.as_ref()], None);
+    let cli = coulomb_hands::run::scenario::Scenario::find(missing).expect_err("missing");
+    assert_eq!(stderr, format!("error: {cli}\n"), "as the CLI prints it");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let scene = dir.join("negative-size.json");
+    let object = r#"{"name": "x", "shape": {"Box": {"half_extents": [0.1, -1, 0.1]}},
+        "mass": 1, "material": "wood", "position": [0, 1, 0]}"#;
+    std::fs::write(&scene, format!(r#"{{"objects": [{object}]}}"#)).expect("written");
+    let stderr = refused(&[scene.as_os_str()], None);
+    let cli = coulomb_hands::scene::Scene::load(&scene).expect_err("a negative size");
+    assert_eq!(stderr, format!("error: {cli}\n"));
+    assert!(stderr.contains("negative-size.json") && stderr.contains("half_extents"), "{stderr}");
+}
+
+#[test]
+fn with_no_display_it_says_so() {
+    let stderr = refused(&["grasp-lift".as_ref()], None);
+    assert!(stderr.starts_with("error: no display: DISPLAY is not set"), "{stderr}");
+    let stderr = refused(&["grasp-lift".as_ref()], Some(":917"));
+    assert!(stderr.starts_with("error: no display: cannot reach X server \":917\""), "{stderr}");
+}
