@@ -92,12 +92,12 @@ impl Plugin for ViewerPlugin {
             .init_resource::<stage::Scenery>()
             .init_resource::<hud::StepTimer>()
             .init_resource::<hud::Scrubbing>()
-            .configure_sets(FixedUpdate, InteractionSystems::Step.run_if(transport::may_step))
+            .add_plugins(transport::TransportPlugin)
             .add_systems(
                 FixedUpdate,
                 (
                     hud::start_step.before(InteractionSystems::Step),
-                    (hud::stop_step, transport::spend_single_step).after(InteractionSystems::Step),
+                    hud::stop_step.after(InteractionSystems::Step),
                 ),
             )
             .add_systems(
@@ -114,7 +114,7 @@ impl Plugin for ViewerPlugin {
             .add_systems(
                 Update,
                 (
-                    (transport::playback_keys, hud::scrub_timeline, transport::seek).chain(),
+                    hud::scrub_timeline.after(transport::playback_keys).before(transport::seek),
                     arrows::toggle_skeleton,
                     mouse_hand::drive_mouse_hand,
                     (camera::frame_view, camera::orbit_camera).chain(),

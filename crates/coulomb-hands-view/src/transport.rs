@@ -15,6 +15,7 @@ use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
 use coulomb_hands::pipeline::Method;
+use coulomb_hands_bevy::InteractionSystems;
 use coulomb_hands_bevy::interaction::{Interaction, Stopped};
 use std::collections::VecDeque;
 use std::path::PathBuf;
@@ -108,6 +109,20 @@ impl Transport {
             return false;
         }
         !self.paused || self.step_once
+    }
+}
+
+/// The transport's systems: the run condition on the plugin's step set,
+/// the keys and the seek (it expects [`Transport`], [`Viewed`] and
+/// [`crate::mouse_hand::MouseHand`] inserted, and the plugin added).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TransportPlugin;
+
+impl Plugin for TransportPlugin {
+    fn build(&self, app: &mut App) {
+        app.configure_sets(FixedUpdate, InteractionSystems::Step.run_if(may_step))
+            .add_systems(FixedUpdate, spend_single_step.after(InteractionSystems::Step))
+            .add_systems(Update, (playback_keys, seek).chain());
     }
 }
 
