@@ -6,7 +6,7 @@
 
 use super::RunError;
 use super::drive::{Observer, StepView};
-use super::grasp::{GraspSite, find_grasps};
+use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
 use super::replay::{GraspObject, is_gripped, is_squeezed};
 use crate::input::playback::Playback;
 use crate::pipeline::{InteractionWorld, WorldError};
@@ -17,10 +17,6 @@ use glam::{Quat, Vec3};
 /// (s), unless the hand closes again sooner. A hand opens in a few tenths
 /// of a second; in this time an object let go falls 1.2 m.
 pub const RELEASE_WINDOW: f64 = 0.5;
-
-/// Where an object's verdict begins: the closings are found every 5 ms of
-/// the recording.
-const SAMPLE_STEP: f64 = 0.005;
 
 /// What happened to the object at one closing of a hand.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -67,6 +63,10 @@ pub struct ClosingVerdict {
     pub released: Option<bool>,
     /// From when the object stayed let go (s), if it was.
     pub released_at: Option<f64>,
+    /// The end of the window in which it must have been let go (s):
+    /// [`RELEASE_WINDOW`] after `open_at`, or the hand's next closing if
+    /// that begins sooner.
+    pub release_by: f64,
     /// The object's largest speed from `opening_at` to the window's end
     /// (m/s).
     pub speed_after_open: f32,
@@ -111,8 +111,6 @@ struct Judged {
     fixed: bool,
     /// The object in the palm frame when the fixture let go.
     reference: Option<Vec3>,
-    /// The end of the release window (s).
-    window_end: f64,
 }
 
 /// The [`Observer`] that puts an object at every closing of a recording's
@@ -160,12 +158,12 @@ impl Closings {
                         slipped_at: None,
                         released: None,
                         released_at: None,
+                        release_by: window_end,
                         speed_after_open: 0.0,
                     },
                     id: None,
                     fixed: true,
                     reference: None,
-                    window_end,
                 }
             })
             .collect();
@@ -224,7 +222,7 @@ impl Observer for Closings {
                     }
                 }
             } else if v.released.is_none() {
-                if t <= j.window_end {
+                if t <= v.release_by {
                     v.speed_after_open = v.speed_after_open.max(state.linvel.length());
                     if is_squeezed(step.world, id) {
                         v.released_at = None;
@@ -233,7 +231,7 @@ impl Observer for Closings {
                     }
                 }
                 let next = t + f64::from(step.world.config().dt);
-                if next > j.window_end {
+                if next > v.release_by {
                     v.released = Some(v.released_at.is_some());
                 } else if next > self.end && v.released_at.is_some() {
                     v.released = Some(true);

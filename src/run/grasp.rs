@@ -88,8 +88,12 @@ fn grasp_point(
 /// makes no grasp, however its aperture wavers.
 pub const CLOSES_TO: f32 = 0.5;
 
+/// How often a recording is sampled to find its closings (s): finer than
+/// any tracker's frame interval, so no closing falls between samples.
+pub const SAMPLE_STEP: f64 = 0.005;
+
 /// Finds every grasp (closing of a hand) of a recording by sampling it
-/// every `step` seconds.
+/// every `step` seconds ([`SAMPLE_STEP`] for the replays' closings).
 ///
 /// A grasp is a stretch of time during which a hand is at least three
 /// quarters of the way from its widest to its closest aperture (thumb tip

@@ -4,7 +4,7 @@
 use super::RunError;
 use super::closing::{ClosingVerdict, Closings};
 use super::drive::{self, Driver, Observer, RecordedHand};
-use super::grasp::{GraspSite, find_grasps};
+use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
 use super::observe::{ObjectSummary, Summary};
 use crate::input::playback::Playback;
 use crate::output::Session;
@@ -157,7 +157,7 @@ pub fn place_at_grasp(
     object: GraspObject,
     index: usize,
 ) -> Result<(Fixture, GraspSite), RunError> {
-    let grasps = find_grasps(playback, 0.005);
+    let grasps = find_grasps(playback, SAMPLE_STEP);
     let site =
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
     let id = world.add_object(&object.at(&site, "grasped"))?;

@@ -7,7 +7,7 @@
 use super::RunError;
 use super::closing::ClosingVerdict;
 use super::drive::{Observer, StepView};
-use super::grasp::find_grasps;
+use super::grasp::{SAMPLE_STEP, find_grasps};
 use super::replay::{GraspObject, replay, replay_closings, replay_world};
 use super::scenario::Scenario;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
@@ -146,7 +146,7 @@ impl ReplayInput {
         let mut world = replay_world(InteractionConfig::default(), false)?;
         let playback = &self.playback;
         let name = &self.recording.source_name;
-        let closings = find_grasps(playback, 0.005);
+        let closings = find_grasps(playback, SAMPLE_STEP);
         let summary = match closings.first() {
             None => {
                 out.placed = "none: no hand closes in the recording".into();
@@ -194,7 +194,7 @@ fn closing_verdicts(c: &ClosingVerdict) -> [Verdict; 2] {
         Verdict {
             name: format!("{label}: released, after the hand began to open (s)"),
             value: let_go,
-            bound: format!("≤ {:.2}", c.open_at + super::closing::RELEASE_WINDOW - c.opening_at),
+            bound: format!("≤ {:.2}", c.release_by - c.opening_at),
             passed: c.released == Some(true),
         },
     ]

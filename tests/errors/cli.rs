@@ -217,7 +217,16 @@ fn replay_json_carries_a_verdict_per_closing_and_the_text_a_line_each() {
     let closings = summary["closings"].as_array().unwrap();
     assert_eq!(closings.len(), 2, "{json}");
     for c in closings {
-        for key in ["slipped_at", "drift", "slip_bound", "released", "released_at", "open_at"] {
+        let keys = [
+            "slipped_at",
+            "drift",
+            "slip_bound",
+            "released",
+            "released_at",
+            "release_by",
+            "open_at",
+        ];
+        for key in keys {
             assert!(c.get(key).is_some(), "{key} missing: {c}");
         }
     }
