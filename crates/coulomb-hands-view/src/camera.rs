@@ -1,9 +1,17 @@
 //! An orbit camera: left-drag turns it about its focus, the wheel zooms,
 //! middle-drag pans. It first frames the objects, or else the tracked hands.
+//!
+//! In stereo (§3.8.2) there are two cameras, one per half of the window,
+//! side by side, each moved half the virtual camera distance (VCD) to its
+//! side along the view's right axis. With image pass-through the VCD must
+//! equal the tracker's camera distance (ICD), or the virtual objects sit at
+//! the wrong depth against the real image.
 
+use bevy::camera::Viewport;
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
 use bevy::prelude::*;
+use bevy::window::PrimaryWindow;
 use coulomb_hands::hand::HandId;
 use coulomb_hands_bevy::convert::to_bevy_vec3;
 use coulomb_hands_bevy::interaction::Interaction;
@@ -81,14 +89,88 @@ impl std::str::FromStr for StartView {
     }
 }
 
-/// The camera, with a tone mapping that needs no lookup tables.
-pub fn spawn_camera(mut commands: Commands, start: Option<Res<StartView>>) {
+/// Side-by-side stereo, with this virtual camera distance.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct Stereo {
+    /// Between the two cameras (m).
+    pub vcd: f32,
+}
+
+/// The average adult interpupillary distance (m).
+pub const HUMAN_IPD: f32 = 0.063;
+/// The distance between a Leap Motion controller's two cameras (m), the
+/// VCD its image pass-through needs.
+pub const LEAP_ICD: f32 = 0.040;
+
+impl std::str::FromStr for Stereo {
+    type Err = String;
+    /// `ipd` (63 mm), `leap` (40 mm) or a distance in millimetres.
+    fn from_str(s: &str) -> Result<Stereo, String> {
+        let vcd = match s {
+            "ipd" => HUMAN_IPD,
+            "leap" => LEAP_ICD,
+            mm => match mm.parse::<f32>() {
+                Ok(mm) if mm.is_finite() && mm > 0.0 && mm <= 1000.0 => mm / 1000.0,
+                _ => {
+                    let why = "expected ipd (63 mm), leap (40 mm) or millimetres in (0, 1000]";
+                    return Err(format!("{why}, got {s:?}"));
+                }
+            },
+        };
+        Ok(Stereo { vcd })
+    }
+}
+
+/// One camera of a stereo pair: how far it sits right of the view's centre
+/// (m, negative for the left eye).
+#[derive(Component, Debug, Clone, Copy)]
+pub struct Eye(pub f32);
+
+/// The camera, or with [`Stereo`] the two eyes' cameras (the left one draws
+/// the HUD), with a tone mapping that needs no lookup tables.
+pub fn spawn_camera(
+    mut commands: Commands,
+    start: Option<Res<StartView>>,
+    stereo: Option<Res<Stereo>>,
+) {
     let mut orbit = Orbit::default();
     if let Some(v) = start {
         (orbit.yaw, orbit.pitch) = (v.yaw_deg.to_radians(), v.pitch_deg.to_radians());
         orbit.distance = v.distance;
     }
-    commands.spawn((Camera3d::default(), Tonemapping::AcesFitted, orbit.transform(), orbit));
+    let camera = (Camera3d::default(), Tonemapping::AcesFitted, orbit.transform(), orbit);
+    let Some(stereo) = stereo else {
+        commands.spawn(camera);
+        return;
+    };
+    commands.spawn((camera.clone(), Eye(-stereo.vcd / 2.0), IsDefaultUiCamera));
+    let right = Camera { order: 1, ..default() };
+    commands.spawn((camera, right, Eye(stereo.vcd / 2.0)));
+}
+
+/// Each eye draws into its half of the window.
+pub fn fit_eyes(
+    windows: Query<&Window, With<PrimaryWindow>>,
+    mut eyes: Query<(&Eye, &mut Camera)>,
+) {
+    let Ok(window) = windows.single() else { return };
+    let size = window.physical_size();
+    let half = UVec2::new(size.x / 2, size.y);
+    if half.x == 0 || half.y == 0 {
+        return;
+    }
+    for (eye, mut camera) in &mut eyes {
+        let x = if eye.0 < 0.0 { 0 } else { half.x };
+        let position = UVec2::new(x, 0);
+        let fits = camera
+            .viewport
+            .as_ref()
+            .is_some_and(|v| (v.physical_position, v.physical_size) == (position, half));
+        if !fits {
+            camera.viewport =
+                Some(Viewport { physical_position: position, physical_size: half, ..default() });
+        }
+    }
 }
 
 /// Puts the focus on the objects' centre, or on the first tracked palm,
@@ -122,9 +204,9 @@ pub fn orbit_camera(
     motion: Res<AccumulatedMouseMotion>,
     scroll: Res<AccumulatedMouseScroll>,
     scrubbing: Res<crate::hud::Scrubbing>,
-    mut cameras: Query<(&mut Orbit, &mut Transform)>,
+    mut cameras: Query<(&mut Orbit, &mut Transform, Option<&Eye>)>,
 ) {
-    for (mut orbit, mut transform) in &mut cameras {
+    for (mut orbit, mut transform, eye) in &mut cameras {
         let d = motion.delta;
         if buttons.pressed(MouseButton::Left) && !scrubbing.0 {
             orbit.yaw -= d.x * TURN_PER_PIXEL;
@@ -137,5 +219,33 @@ pub fn orbit_camera(
         orbit.distance =
             (orbit.distance * (-scroll.delta.y * ZOOM_PER_LINE).exp()).clamp(0.1, 10.0);
         *transform = orbit.transform();
+        if let Some(eye) = eye {
+            let right = transform.right();
+            transform.translation += right * eye.0;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stereo_takes_the_presets_or_millimetres_and_refuses_others() {
+        assert_eq!("ipd".parse::<Stereo>(), Ok(Stereo { vcd: 0.063 }));
+        assert_eq!("leap".parse::<Stereo>(), Ok(Stereo { vcd: 0.040 }));
+        assert_eq!("55".parse::<Stereo>(), Ok(Stereo { vcd: 0.055 }));
+        for bad in ["0", "-5", "NaN", "inf", "eyes", "2000"] {
+            assert!(bad.parse::<Stereo>().unwrap_err().contains("ipd"), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_start_view_is_yaw_pitch_distance_within_limits() {
+        let v: StartView = "90,20,0.5".parse().expect("a view");
+        assert_eq!(v, StartView { yaw_deg: 90.0, pitch_deg: 20.0, distance: 0.5 });
+        for bad in ["90,20", "0,85,1", "0,0,0.01", "a,b,c", "0,0,NaN"] {
+            assert!(bad.parse::<StartView>().is_err(), "{bad}");
+        }
     }
 }

@@ -44,6 +44,8 @@ pub struct Viewer {
     pub view: Option<camera::StartView>,
     /// Whether the raw skeleton is shown at first.
     pub skeleton: bool,
+    /// Side-by-side stereo, if asked for.
+    pub stereo: Option<camera::Stereo>,
 }
 
 impl Viewer {
@@ -75,6 +77,10 @@ impl Viewer {
         if let Some(view) = self.view {
             app.insert_resource(view);
         }
+        if let Some(stereo) = self.stereo {
+            app.insert_resource(stereo);
+        }
+
         Ok(app)
     }
 }
@@ -117,7 +123,7 @@ impl Plugin for ViewerPlugin {
                     hud::scrub_timeline.after(transport::playback_keys).before(transport::seek),
                     arrows::toggle_skeleton,
                     mouse_hand::drive_mouse_hand,
-                    (camera::frame_view, camera::orbit_camera).chain(),
+                    (camera::frame_view, camera::orbit_camera, camera::fit_eyes).chain(),
                 ),
             )
             .add_systems(

@@ -5,7 +5,7 @@
 use clap::Parser;
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::run::replay::GraspObject;
-use coulomb_hands_view::camera::StartView;
+use coulomb_hands_view::camera::{StartView, Stereo};
 use coulomb_hands_view::source::{LoadOptions, Source};
 use coulomb_hands_view::transport::Shot;
 use coulomb_hands_view::{Viewer, display};
@@ -41,6 +41,10 @@ struct Args {
     /// Start with the raw tracked skeleton shown (Tab toggles it).
     #[arg(long)]
     skeleton: bool,
+    /// Side-by-side stereo (§3.8.2) with this virtual camera distance: ipd (63 mm), leap
+    /// (40 mm, the Leap's camera distance, for its image pass-through) or millimetres.
+    #[arg(long, value_name = "ipd|leap|MM")]
+    stereo: Option<Stereo>,
     /// Where the camera starts: yaw and pitch in degrees, distance in metres (default 0,32,0.55).
     #[arg(long, value_name = "YAW,PITCH,DISTANCE")]
     view: Option<StartView>,
@@ -76,6 +80,7 @@ fn main() -> ExitCode {
         paused: args.paused,
         view: args.view,
         skeleton: args.skeleton,
+        stereo: args.stereo,
     };
     let mut app = match viewer.app() {
         Ok(app) => app,

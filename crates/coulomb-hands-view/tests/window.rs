@@ -164,3 +164,50 @@ fn with_no_display_it_says_so() {
     let stderr = refused(&["grasp-lift".as_ref()], Some(":917"));
     assert!(stderr.starts_with("error: no display: cannot reach X server \":917\""), "{stderr}");
 }
+
+/// The teal pixels' mean column in `columns` of `img`, or `None`.
+fn teal_column(img: &RgbImage, columns: std::ops::Range<u32>) -> Option<f64> {
+    let (mut sum, mut n) = (0.0, 0.0);
+    for (x, _, p) in img.enumerate_pixels().filter(|(x, ..)| columns.contains(x)) {
+        if matches!(hsv(p), (h, s, v) if (170.0..200.0).contains(&h) && s > 0.4 && v > 0.25) {
+            (sum, n) = (sum + f64::from(x - columns.start), n + 1.0);
+        }
+    }
+    (n > 50.0).then(|| sum / n)
+}
+
+/// Side-by-side stereo (§3.8.2): a ball 0.5 m straight ahead appears in the
+/// two halves shifted by the disparity of a pinhole camera pair,
+/// f·VCD/d, with f = (H/2)/tan(fov/2) pixels (Bevy's 45° vertical field of
+/// view, H = 720): 109.5 px for the human IPD, 69.5 px for the Leap's ICD.
+#[test]
+fn stereo_halves_differ_by_the_disparity_of_the_virtual_camera_distance() {
+    let dir = out_dir();
+    let scene = dir.join("ball-ahead.json");
+    let ball = r#"{"name": "ball", "shape": {"Sphere": {"radius": 0.02}}, "mass": 0.05,
+        "material": "wood", "position": [0, 0.3, 0]}"#;
+    std::fs::write(&scene, format!(r#"{{"gravity": [0, 0, 0], "objects": [{ball}]}}"#))
+        .expect("written");
+    let f = 360.0 / (std::f64::consts::PI / 8.0).tan();
+    for (preset, vcd) in [("ipd", 0.063), ("leap", 0.040)] {
+        let shot = dir.join(format!("stereo-{preset}.png"));
+        let (ok, stderr) = view(&[
+            scene.to_str().expect("a UTF-8 path"),
+            "--stereo",
+            preset,
+            "--view=0,0,0.5",
+            "--screenshot",
+            &format!("0.1={}", shot.display()),
+            "--exit-after",
+            "0.1",
+        ]);
+        assert!(ok, "the viewer failed:\n{stderr}");
+        let img = image::open(&shot).expect("the screenshot").to_rgb8();
+        let half = img.width() / 2;
+        let left = teal_column(&img, 0..half).expect("the ball in the left half");
+        let right = teal_column(&img, half..img.width()).expect("the ball in the right half");
+        let expected = f * vcd / 0.5;
+        let disparity = left - right;
+        assert!((disparity - expected).abs() < 3.0, "{preset}: {disparity} px, not {expected}");
+    }
+}
