@@ -68,6 +68,13 @@ fn main() -> ExitCode {
         eprintln!("error: --exit-after must be a time in seconds ≥ 0, got {t}");
         return ExitCode::FAILURE;
     }
+    for shot in &args.screenshot {
+        let dir = shot.path.parent().filter(|d| !d.as_os_str().is_empty());
+        if let Some(Err(e)) = dir.map(std::fs::create_dir_all) {
+            eprintln!("error: {}: cannot make its directory: {e}", shot.path.display());
+            return ExitCode::FAILURE;
+        }
+    }
     if let Err(e) = display::check() {
         eprintln!("error: {e}");
         return ExitCode::FAILURE;

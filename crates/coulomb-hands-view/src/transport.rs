@@ -75,6 +75,8 @@ pub struct Transport {
     shot_frames: u32,
     /// Quit once this simulated time is reached and the shots are saved.
     pub exit_after: Option<f64>,
+    /// A screenshot that could not be saved: the app exits with this error.
+    pub failed: Option<String>,
 }
 
 impl Transport {
@@ -91,6 +93,7 @@ impl Transport {
             shots: shots.into(),
             shot_frames: 0,
             exit_after,
+            failed: None,
         }
     }
 
@@ -239,7 +242,11 @@ pub fn take_shots(
         commands
             .spawn(Screenshot::primary_window())
             .observe(save_to_disk(shot.path.clone()))
-            .observe(|_: On<ScreenshotCaptured>, mut transport: ResMut<Transport>| {
+            .observe(move |_: On<ScreenshotCaptured>, mut transport: ResMut<Transport>| {
+                // Bevy's saver only logs a failure; a missing file is an error.
+                if !shot.path.is_file() {
+                    transport.failed = Some(format!("could not save {}", shot.path.display()));
+                }
                 transport.shots.pop_front();
                 transport.shot_frames = 0;
             });
@@ -256,9 +263,14 @@ pub fn exit_when_done(
     timer: Res<crate::hud::StepTimer>,
     mut exit: MessageWriter<AppExit>,
 ) {
+    if let Some(e) = &transport.failed {
+        eprintln!("error: {e}");
+        exit.write(AppExit::error());
+        return;
+    }
     let (Some(after), Some(interaction)) = (transport.exit_after, interaction) else { return };
     if let Some(Stopped::Failed(e)) = interaction.stopped() {
-        eprintln!("coulomb-hands-view: the run failed: {e}");
+        eprintln!("error: the run failed: {e}");
         exit.write(AppExit::error());
         return;
     }

@@ -211,3 +211,11 @@ fn stereo_halves_differ_by_the_disparity_of_the_virtual_camera_distance() {
         assert!((disparity - expected).abs() < 3.0, "{preset}: {disparity} px, not {expected}");
     }
 }
+
+#[test]
+fn a_screenshot_that_cannot_be_saved_is_an_error() {
+    let (ok, stderr) =
+        view(&["grasp-lift", "--screenshot", "0.05=/proc/no.png", "--exit-after", "1"]);
+    assert!(!ok, "exit 0 without the screenshot:\n{stderr}");
+    assert!(stderr.contains("error: could not save /proc/no.png"), "{stderr}");
+}
