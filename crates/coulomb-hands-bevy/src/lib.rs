@@ -98,7 +98,9 @@ fn match_fixed_timestep(
 ) {
     let Some(interaction) = interaction else { return };
     let dt = Duration::from_secs_f64(f64::from(interaction.world().config().dt));
-    if fixed.timestep() != dt {
+    // Bevy refuses a zero timestep; a world's dt below a nanosecond would
+    // round to it, and is left at the last one.
+    if fixed.timestep() != dt && !dt.is_zero() {
         fixed.set_timestep(dt);
     }
 }

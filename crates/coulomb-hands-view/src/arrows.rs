@@ -1,7 +1,7 @@
 //! Arrows at the contacts (Fig. 1.1), and the raw tracked skeleton.
 //!
 //! - **Red:** each contact's force on the object, from its point C, at
-//!   [`FORCE_SCALE`] (5 cm per newton), clipped at [`MAX_ARROW`].
+//!   [`FORCE_SCALE`] (3 cm per newton), clipped at [`MAX_ARROW`].
 //! - **Yellow:** the hand's motion at each contact: from the bone's point p,
 //!   where p will be in [`MOTION_SCALE`] (0.1 s) at its current velocity.
 //! - **Cyan** (Tab): the tracked skeleton, as the physics sees it, which
@@ -11,6 +11,7 @@
 
 use bevy::prelude::*;
 use coulomb_hands::hand::{BoneShape, HandId, HandPose};
+use coulomb_hands::scene::ObjectId;
 use coulomb_hands_bevy::convert::to_bevy_vec3;
 use coulomb_hands_bevy::interaction::Interaction;
 use std::collections::HashMap;
@@ -34,16 +35,20 @@ const STILL: f32 = 0.002;
 #[derive(Resource, Debug, Default, Clone, Copy)]
 pub struct ShowSkeleton(pub bool);
 
-/// The bones' contact points one step of the world's clock ago, for their
-/// velocities.
+/// A contact: its hand, bone (index) and object.
+type ContactKey = (HandId, usize, ObjectId);
+
+/// The contacts' bone points when last drawn, for their velocities.
 #[derive(Resource, Debug, Default)]
 pub struct ContactMotion {
+    /// The interaction they belong to.
+    serial: Option<u64>,
     /// The world time (s) the points are from.
     at: f64,
-    /// Per hand and bone: the point p then.
-    points: HashMap<(HandId, usize), Vec3>,
-    /// Per hand and bone: p's velocity (m/s), kept while paused.
-    velocities: HashMap<(HandId, usize), Vec3>,
+    /// Per contact: the point p then.
+    points: HashMap<ContactKey, Vec3>,
+    /// Per contact: p's velocity (m/s), kept while paused.
+    velocities: HashMap<ContactKey, Vec3>,
 }
 
 /// Gizmos on top of the scene, in thicker lines.
@@ -75,6 +80,9 @@ pub fn draw_arrows(
     mut gizmos: Gizmos,
 ) {
     let Some(interaction) = interaction else { return };
+    if motion.serial != Some(interaction.serial()) {
+        *motion = ContactMotion { serial: Some(interaction.serial()), ..default() };
+    }
     let world = interaction.world();
     let t = world.time();
     let moved = t > motion.at;
@@ -82,7 +90,7 @@ pub fn draw_arrows(
         let elapsed = (t - motion.at) as f32;
         let mut points = HashMap::new();
         for c in world.contacts() {
-            let key = (c.hand, c.bone.index());
+            let key = (c.hand, c.bone.index(), c.object);
             let p = to_bevy_vec3(c.bone_point);
             if let (true, Some(before)) = (moved, motion.points.get(&key).copied()) {
                 motion.velocities.insert(key, (p - before) / elapsed);
@@ -94,7 +102,8 @@ pub fn draw_arrows(
     }
     for c in world.contacts() {
         arrow(&mut gizmos, to_bevy_vec3(c.point), to_bevy_vec3(c.force), FORCE_SCALE, FORCE_RED);
-        let v = motion.velocities.get(&(c.hand, c.bone.index())).copied().unwrap_or_default();
+        let key = (c.hand, c.bone.index(), c.object);
+        let v = motion.velocities.get(&key).copied().unwrap_or_default();
         if v.length() > STILL {
             arrow(&mut gizmos, to_bevy_vec3(c.bone_point), v, MOTION_SCALE, MOTION_YELLOW);
         }

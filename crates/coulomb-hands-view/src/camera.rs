@@ -9,7 +9,7 @@
 
 use bevy::camera::Viewport;
 use bevy::core_pipeline::tonemapping::Tonemapping;
-use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll};
+use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit};
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use coulomb_hands::hand::HandId;
@@ -60,7 +60,7 @@ impl Default for Orbit {
 /// Where the camera starts: yaw and pitch (degrees), distance (m).
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
 pub struct StartView {
-    /// Turn about the vertical (°); 0 looks along +z, 90 along −x.
+    /// Turn about the vertical (°); 0 looks along +z, 90 along +x (from −x).
     pub yaw_deg: f32,
     /// Elevation above the horizontal (°).
     pub pitch_deg: f32,
@@ -72,7 +72,7 @@ impl std::str::FromStr for StartView {
     type Err = String;
     /// `YAW,PITCH,DISTANCE`, e.g. `90,20,0.5`.
     fn from_str(s: &str) -> Result<StartView, String> {
-        let parts: Vec<f32> = s.split(',').filter_map(|p| p.trim().parse().ok()).collect();
+        let parts: Vec<f32> = s.split(',').map(|p| p.trim().parse().unwrap_or(f32::NAN)).collect();
         match parts[..] {
             [yaw_deg, pitch_deg, distance]
                 if parts.iter().all(|p| p.is_finite())
@@ -216,8 +216,12 @@ pub fn orbit_camera(
             let pan = (transform.right() * -d.x + transform.up() * d.y) * orbit.distance * 0.002;
             orbit.focus += pan;
         }
-        orbit.distance =
-            (orbit.distance * (-scroll.delta.y * ZOOM_PER_LINE).exp()).clamp(0.1, 10.0);
+        // A touchpad scrolls in pixels, a wheel in lines (about 20 pixels).
+        let lines = match scroll.unit {
+            MouseScrollUnit::Line => scroll.delta.y,
+            MouseScrollUnit::Pixel => scroll.delta.y / 20.0,
+        };
+        orbit.distance = (orbit.distance * (-lines * ZOOM_PER_LINE).exp()).clamp(0.1, 10.0);
         *transform = orbit.transform();
         if let Some(eye) = eye {
             let right = transform.right();
@@ -244,7 +248,7 @@ mod tests {
     fn a_start_view_is_yaw_pitch_distance_within_limits() {
         let v: StartView = "90,20,0.5".parse().expect("a view");
         assert_eq!(v, StartView { yaw_deg: 90.0, pitch_deg: 20.0, distance: 0.5 });
-        for bad in ["90,20", "0,85,1", "0,0,0.01", "a,b,c", "0,0,NaN"] {
+        for bad in ["90,20", "0,85,1", "0,0,0.01", "a,b,c", "0,0,NaN", "1,x,2,3", "1,2,0.5,"] {
             assert!(bad.parse::<StartView>().is_err(), "{bad}");
         }
     }

@@ -1,13 +1,14 @@
 //! The drawn hand of thesis §3.6 (Fig. 3.19): semi-transparent while it
-//! touches nothing, and opaque during contact. Once a contact presses, the
-//! hand is drawn in its pose of that moment, carried along with the object,
-//! so the picture never shows fingers sunk into what they hold (the tracked
-//! bones may sink in: they are not bodies). The pose is refined when
-//! another finger (or the palm) begins to press: that part takes its pose
-//! of that moment. While its contacts only hover (within the contact
-//! offset, pressing nothing) the hand is drawn where it is tracked: it has
-//! not reached the surface, so nothing sinks in, and a hand that grazes an
-//! object on its way to a grasp is not frozen open.
+//! touches nothing, and opaque during contact. At the physics step a contact
+//! first presses, the hand is frozen in its pose of that moment and carried
+//! along with the object, so the picture never shows fingers sunk into what
+//! they hold (the tracked bones may sink in: they are not bodies). The pose
+//! is refined when another finger (or the palm) begins to press: that part
+//! takes its pose of that moment. The freeze lasts while the hand touches
+//! the object at all, pressing or hovering in the offset band. Before any
+//! press, hovering contacts leave the hand drawn where it is tracked: it has
+//! not reached the surface, and a hand that grazes an object on its way to a
+//! grasp is not frozen open.
 //!
 //! The drawn pose is kept in the touched object's frame and mapped back to
 //! the world with the object's current pose, the thesis's
@@ -65,8 +66,12 @@ fn into_frame(
     }
 }
 
-/// The next grip of a hand from its last one, its tracked pose and its
-/// contacts this frame; `None` when none of them presses.
+/// The next grip of a hand, from its last one, its tracked pose and its
+/// contacts after a physics step. A grip begins when a contact presses
+/// (normal force > 0) and lasts while the hand touches that object at all
+/// (pressing or hovering in the offset band), so a contact that stops
+/// pressing for a step does not snap the drawn hand into the tracked one.
+/// `None` when there is no grip.
 pub fn next_grip(
     last: Option<Grip>,
     tracked: &HandPose,
@@ -75,17 +80,12 @@ pub fn next_grip(
 ) -> Option<Grip> {
     let pressing: Vec<&Contact> =
         contacts.iter().copied().filter(|c| c.normal_force > 0.0).collect();
-    let contacts = &pressing[..];
-    let first = contacts.first()?;
-    let object =
-        last.as_ref().map(|g| g.object).filter(|o| contacts.iter().any(|c| c.object == *o));
-    let object = object.unwrap_or(first.object);
+    let kept = last.filter(|g| contacts.iter().any(|c| c.object == g.object));
+    let object = kept.as_ref().map(|g| g.object).or(pressing.first().map(|c| c.object))?;
     let state = world.object_state(object).ok()?;
     let local_now = into_frame(tracked, state.position, state.rotation, true);
-    let mut grip = match last.filter(|g| g.object == object) {
-        Some(grip) => grip,
-        None => Grip { object, local: local_now.clone(), parts: [false; PARTS] },
-    };
+    let mut grip = kept.unwrap_or(Grip { object, local: local_now.clone(), parts: [false; PARTS] });
+    let contacts = &pressing[..];
     for c in contacts.iter().filter(|c| c.object == object) {
         let p = part(c.bone);
         if !grip.parts[p] {
@@ -131,10 +131,34 @@ pub struct DrawnHands {
     cube: Option<Handle<Mesh>>,
 }
 
+/// Every hand's grip, updated after each physics step, so a hand freezes
+/// at the step its contact first presses whatever the frame rate.
+#[derive(Resource, Debug, Default)]
+pub struct Grips {
+    /// The interaction they belong to.
+    serial: Option<u64>,
+    /// Per hand, in the world's order.
+    pub grips: Vec<Option<Grip>>,
+}
+
+/// After each physics step: every hand's next grip ([`next_grip`]).
+pub fn track_grips(interaction: Option<NonSend<Interaction>>, mut grips: ResMut<Grips>) {
+    let Some(interaction) = interaction else { return };
+    if grips.serial != Some(interaction.serial()) {
+        *grips = Grips { serial: Some(interaction.serial()), grips: Vec::new() };
+    }
+    let world = interaction.world();
+    grips.grips.resize(world.hand_count(), None);
+    for (i, grip) in grips.grips.iter_mut().enumerate() {
+        let id = HandId(i as u32);
+        let contacts: Vec<&Contact> = world.contacts().iter().filter(|c| c.hand == id).collect();
+        let tracked = world.hand_pose(id);
+        *grip = tracked.and_then(|t| next_grip(grip.take(), t, &contacts, world));
+    }
+}
+
 /// One drawn hand.
 struct DrawnHand {
-    /// Its frozen pose, while a contact presses.
-    grip: Option<Grip>,
     /// Whether it has contacts (drawn opaque).
     in_contact: bool,
     /// Its material, shared by its bones.
@@ -148,17 +172,13 @@ impl DrawnHands {
     pub fn in_contact(&self, i: usize) -> bool {
         self.hands.get(i).is_some_and(|h| h.in_contact)
     }
-
-    /// Whether hand `i` is drawn frozen in its grip.
-    pub fn gripping(&self, i: usize) -> bool {
-        self.hands.get(i).is_some_and(|h| h.grip.is_some())
-    }
 }
 
-/// Updates every hand's contact state and grip, then poses its bones and
-/// sets its opacity.
+/// Poses every hand's bones, frozen in its grip or as tracked, and sets its
+/// opacity from its contacts.
 pub fn draw_hands(
     interaction: Option<NonSend<Interaction>>,
+    grips: Res<Grips>,
     mut drawn: ResMut<DrawnHands>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
@@ -187,22 +207,21 @@ pub fn draw_hands(
                     .id()
             })
             .collect();
-        drawn.hands.push(DrawnHand { grip: None, in_contact: false, material, bones });
+        drawn.hands.push(DrawnHand { in_contact: false, material, bones });
     }
     let mut poses = Vec::with_capacity(drawn.hands.len());
     for (i, hand) in drawn.hands.iter_mut().enumerate() {
         let id = HandId(i as u32);
         let tracked = world.hand_pose(id);
-        let contacts: Vec<&Contact> = world.contacts().iter().filter(|c| c.hand == id).collect();
-        hand.grip = tracked.and_then(|t| next_grip(hand.grip.take(), t, &contacts, world));
-        let in_contact = tracked.is_some() && !contacts.is_empty();
+        let in_contact = tracked.is_some() && world.contacts().iter().any(|c| c.hand == id);
         if in_contact != hand.in_contact
             && let Some(mut m) = materials.get_mut(&hand.material)
         {
             *m = material(in_contact);
         }
         hand.in_contact = in_contact;
-        let frozen = hand.grip.as_ref().and_then(|g| drawn_pose(g, world));
+        let grip = grips.grips.get(i).and_then(Option::as_ref).filter(|_| tracked.is_some());
+        let frozen = grip.and_then(|g| drawn_pose(g, world));
         poses.push(frozen.or_else(|| tracked.cloned()));
     }
     for (bone, mut transform, mut mesh, mut visibility) in &mut bones {

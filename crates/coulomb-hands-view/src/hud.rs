@@ -21,9 +21,10 @@ pub struct HudText;
 #[derive(Component)]
 pub struct TimelineFill;
 
-/// Whether a left-drag began on the timeline (so it scrubs, not orbits).
+/// Whether a left-drag began on the timeline (so it scrubs, not orbits),
+/// and the time it last went to.
 #[derive(Resource, Debug, Default)]
-pub struct Scrubbing(pub bool);
+pub struct Scrubbing(pub bool, Option<f64>);
 
 /// The wall time of the physics steps: each fixed tick's step alone, and
 /// the frame's whole fixed loop (the step plus Bevy's schedule per tick).
@@ -156,23 +157,31 @@ pub fn update_hud(
 }
 
 /// A left press on the timeline seeks there, and dragging scrubs.
+///
+/// The bar spans the window, or in stereo the left eye's half, where the
+/// UI is laid out. A held button seeks again only when the cursor moves.
 pub fn scrub_timeline(
     buttons: Res<ButtonInput<MouseButton>>,
     windows: Query<&Window, With<PrimaryWindow>>,
+    stereo: Option<Res<crate::camera::Stereo>>,
     mut scrubbing: ResMut<Scrubbing>,
     mut transport: ResMut<Transport>,
 ) {
     let Some(end) = transport.end else { return };
     let Ok(window) = windows.single() else { return };
+    let width = if stereo.is_some() { window.width() / 2.0 } else { window.width() };
     let cursor = window.cursor_position();
     if buttons.just_pressed(MouseButton::Left) {
-        scrubbing.0 = cursor.is_some_and(|c| c.y >= window.height() - TIMELINE_PX);
+        let on_bar = |c: Vec2| c.y >= window.height() - TIMELINE_PX && c.x <= width;
+        *scrubbing = Scrubbing(cursor.is_some_and(on_bar), None);
     }
     if !buttons.pressed(MouseButton::Left) {
         scrubbing.0 = false;
     }
     if let (true, Some(c)) = (scrubbing.0, cursor) {
-        let fraction = (c.x / window.width()).clamp(0.0, 1.0);
-        transport.seek = Some(f64::from(fraction) * end);
+        let to = f64::from((c.x / width).clamp(0.0, 1.0)) * end;
+        if scrubbing.1 != Some(to) {
+            (scrubbing.1, transport.seek) = (Some(to), Some(to));
+        }
     }
 }

@@ -93,6 +93,7 @@ pub struct ViewerPlugin;
 impl Plugin for ViewerPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<hand_visual::DrawnHands>()
+            .init_resource::<hand_visual::Grips>()
             .init_resource::<arrows::ShowSkeleton>()
             .init_resource::<arrows::ContactMotion>()
             .init_resource::<stage::Scenery>()
@@ -103,7 +104,7 @@ impl Plugin for ViewerPlugin {
                 FixedUpdate,
                 (
                     hud::start_step.before(InteractionSystems::Step),
-                    hud::stop_step.after(InteractionSystems::Step),
+                    (hud::stop_step, hand_visual::track_grips).after(InteractionSystems::Step),
                 ),
             )
             .add_systems(
@@ -122,7 +123,7 @@ impl Plugin for ViewerPlugin {
                 (
                     hud::scrub_timeline.after(transport::playback_keys).before(transport::seek),
                     arrows::toggle_skeleton,
-                    mouse_hand::drive_mouse_hand,
+                    mouse_hand::drive_mouse_hand.after(transport::seek),
                     (camera::frame_view, camera::orbit_camera, camera::fit_eyes).chain(),
                 ),
             )

@@ -68,6 +68,10 @@ fn main() -> ExitCode {
         eprintln!("error: --exit-after must be a time in seconds ≥ 0, got {t}");
         return ExitCode::FAILURE;
     }
+    if args.paused && (args.exit_after.is_some() || !args.screenshot.is_empty()) {
+        eprintln!("error: --paused never reaches the time of --exit-after or --screenshot");
+        return ExitCode::FAILURE;
+    }
     for shot in &args.screenshot {
         let dir = shot.path.parent().filter(|d| !d.as_os_str().is_empty());
         if let Some(Err(e)) = dir.map(std::fs::create_dir_all) {

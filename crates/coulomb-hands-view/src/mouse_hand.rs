@@ -73,9 +73,13 @@ impl Default for MouseHand {
 
 impl MouseHand {
     /// Drives the hand of `inlet` (a restarted interaction's), from the
-    /// starting pose; `None` for an input with its own hands.
+    /// starting pose, which it pushes at once; `None` for an input with its
+    /// own hands.
     pub fn attach(&mut self, inlet: Option<HandInlet>) {
         *self = MouseHand { inlet, ..MouseHand::default() };
+        if let Some(inlet) = &self.inlet {
+            inlet.push(Some(self.sample()));
+        }
     }
 
     /// Whether there is a hand to drive.
@@ -99,16 +103,19 @@ impl MouseHand {
 
 /// Moves, turns and curls the hand from the keys and mouse held this frame,
 /// and pushes its pose. Motion is relative to the camera's heading when
-/// there is a camera.
+/// there is a camera. Rates are per second of simulated time (Bevy's
+/// virtual clock, which the playback speed scales), and the hand holds
+/// still while the playback is paused, so it never outruns the physics.
 pub fn drive_mouse_hand(
     mut hand: ResMut<MouseHand>,
     keys: Res<ButtonInput<KeyCode>>,
     buttons: Option<Res<ButtonInput<MouseButton>>>,
     motion: Option<Res<AccumulatedMouseMotion>>,
     cameras: Query<&GlobalTransform, With<Camera3d>>,
-    time: Res<Time<Real>>,
+    time: Res<Time<Virtual>>,
+    transport: Option<Res<crate::transport::Transport>>,
 ) {
-    if !hand.active() {
+    if !hand.active() || transport.is_some_and(|t| t.paused) {
         return;
     }
     let dt = time.delta_secs();

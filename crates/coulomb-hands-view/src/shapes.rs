@@ -109,7 +109,17 @@ mod tests {
             .map(glam::Vec3::from_array);
         let shape = SharedShape::convex_hull(&points).expect("a tetrahedron");
         let mesh = &meshes(&*shape)[0].1;
-        assert_eq!(positions(mesh).len(), 12, "4 faces of 3 vertices each");
+        let corners = positions(mesh);
+        assert_eq!(corners.len(), 12, "4 faces of 3 vertices each");
+        let normals = mesh.attribute(Mesh::ATTRIBUTE_NORMAL).and_then(|n| n.as_float3());
+        let normals: Vec<Vec3> = normals.expect("normals").iter().map(|n| Vec3::from(*n)).collect();
+        for (face, n) in corners.chunks(3).zip(normals.chunks(3)) {
+            assert!(n[0] == n[1] && n[1] == n[2], "one normal per face: {n:?}");
+            let across = (face[1] - face[0]).cross(face[2] - face[0]).normalize();
+            assert!((across - n[0]).length() < 1e-5, "the face's own normal: {n:?}");
+            let outward = face[0] - Vec3::splat(0.0125);
+            assert!(n[0].dot(outward) > 0.0, "pointing out of the hull");
+        }
     }
 
     use rapier3d::math::Pose;

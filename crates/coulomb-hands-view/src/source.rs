@@ -68,13 +68,21 @@ impl Source {
     /// it has `hands`, else a scene.
     pub fn load(input: Option<&str>, options: &LoadOptions) -> Result<Source, LoadError> {
         let Some(input) = input else {
+            if options.scene.is_some() || options.object_at_grasp.is_some() {
+                return Err("--scene and --object-at-grasp go with a recording".into());
+            }
             let scene = Scene::parse("scenes/desk.json", DESK)?;
             return Ok(Source::Scene { name: "desk".into(), scene });
         };
+        let recording = !is_scenario(input) && Path::new(input).exists() && is_recording(input);
+        if !recording && (options.scene.is_some() || options.object_at_grasp.is_some()) {
+            let why = "--scene and --object-at-grasp go with a recording";
+            return Err(format!("{input}: {why}").into());
+        }
         if !Path::new(input).exists() || is_scenario(input) {
             return Ok(Source::Scenario(Box::new(Scenario::find(input)?)));
         }
-        if is_recording(input) {
+        if recording {
             let recording = coulomb_hands::input::recording::load(Path::new(input))?;
             let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
             let scene = options.scene.as_deref().map(Scene::load).transpose()?;

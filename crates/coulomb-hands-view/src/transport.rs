@@ -13,12 +13,13 @@ use crate::ready::RendererReady;
 use crate::source::Source;
 use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
-use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured, save_to_disk};
+use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use coulomb_hands::pipeline::Method;
 use coulomb_hands_bevy::InteractionSystems;
 use coulomb_hands_bevy::interaction::{Interaction, Stopped};
 use std::collections::VecDeque;
 use std::path::PathBuf;
+use std::time::Duration;
 
 /// Playback speeds (× real time) the `[` and `]` keys move between.
 pub const SPEEDS: [f32; 9] = [0.0625, 0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
@@ -99,7 +100,7 @@ impl Transport {
 
     /// The playback speed (× real time).
     pub fn speed(&self) -> f32 {
-        SPEEDS[self.speed]
+        SPEEDS[self.speed.min(SPEEDS.len() - 1)]
     }
 
     /// Whether the physics may step from time `t` (s) with step `dt`: not
@@ -184,11 +185,17 @@ pub fn playback_keys(
     }
     if time.relative_speed() != t.speed() {
         time.set_relative_speed(t.speed());
+        // At most a quarter second of simulation per frame at any speed, so
+        // a fast replay of a heavy scene slows down rather than freezing.
+        time.set_max_delta(Duration::from_secs_f32(0.25 / t.speed().max(1.0)));
     }
 }
 
 /// Goes to the time asked for: back by rebuilding from t = 0, then on by
-/// stepping, all in this frame (clamped to the end).
+/// stepping, all in this frame (never past the end, the time to quit or the
+/// next screenshot). These steps write no contact messages. A scene's mouse
+/// hand is not replayed: going back restarts it at its start pose, and
+/// going on steps with the hand held still.
 pub fn seek(
     mut transport: ResMut<Transport>,
     viewed: Res<Viewed>,
@@ -198,7 +205,10 @@ pub fn seek(
     let (Some(target), Some(mut interaction)) = (transport.seek.take(), interaction) else {
         return;
     };
-    let target = transport.end.map_or(target, |end| target.min(end));
+    // Never past the end, the time to quit or the next screenshot's time.
+    let next_shot = transport.shots.front().map(|s| s.at);
+    let limits = [transport.end, transport.exit_after, next_shot];
+    let target = limits.into_iter().flatten().fold(target, f64::min);
     let dt = f64::from(interaction.world().config().dt);
     if target < interaction.world().time() - dt / 2.0 {
         match viewed.source.build(viewed.method) {
@@ -239,18 +249,23 @@ pub fn take_shots(
     }
     transport.shot_frames += 1;
     if transport.shot_frames == SETTLE_FRAMES {
-        commands
-            .spawn(Screenshot::primary_window())
-            .observe(save_to_disk(shot.path.clone()))
-            .observe(move |_: On<ScreenshotCaptured>, mut transport: ResMut<Transport>| {
-                // Bevy's saver only logs a failure; a missing file is an error.
-                if !shot.path.is_file() {
-                    transport.failed = Some(format!("could not save {}", shot.path.display()));
+        commands.spawn(Screenshot::primary_window()).observe(
+            move |captured: On<ScreenshotCaptured>, mut transport: ResMut<Transport>| {
+                if let Err(e) = save_png(&captured.image, &shot.path) {
+                    transport.failed = Some(format!("could not save {}: {e}", shot.path.display()));
                 }
                 transport.shots.pop_front();
                 transport.shot_frames = 0;
-            });
+            },
+        );
     }
+}
+
+/// Writes a captured frame as an 8-bit RGB PNG (the alpha channel of a
+/// window capture carries no transparency).
+fn save_png(image: &Image, path: &std::path::Path) -> Result<(), String> {
+    let rgb = image.clone().try_into_dynamic().map_err(|e| e.to_string())?.to_rgb8();
+    rgb.save_with_format(path, image::ImageFormat::Png).map_err(|e| e.to_string())
 }
 
 /// Quits once the time to quit after is reached (or the run cannot go on)

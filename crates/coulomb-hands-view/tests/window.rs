@@ -23,8 +23,14 @@ fn out_dir() -> PathBuf {
     dir
 }
 
-/// Runs the viewer under `xvfb-run` with `args`; returns its stderr.
+/// One Xvfb at a time: `xvfb-run -a` picking a free display number can race
+/// with another test's.
+static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// Runs the viewer under `xvfb-run` with `args`; returns whether it
+/// succeeded, and its stderr.
 fn view(args: &[&str]) -> (bool, String) {
+    let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let found = Command::new("xvfb-run").arg("--help").output().is_ok();
     assert!(found, "xvfb-run is missing: install README's apt packages (xvfb mesa-vulkan-drivers)");
     let out = Command::new("xvfb-run")
@@ -34,6 +40,16 @@ fn view(args: &[&str]) -> (bool, String) {
         .output()
         .expect("xvfb-run runs");
     (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+/// Removes a previous run's screenshots, so only this run's can be read.
+fn fresh(paths: &[&Path]) {
+    for path in paths {
+        match std::fs::remove_file(path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => panic!("{path:?}: {e}"),
+            _ => {}
+        }
+    }
 }
 
 /// Hue (degrees), saturation and value of a pixel, each of s and v in [0, 1].
@@ -95,6 +111,7 @@ fn colours(img: &RgbImage) -> usize {
 fn grasp_lift_draws_the_hand_see_through_then_opaque_with_force_arrows() {
     let dir = out_dir();
     let (before, holding) = (dir.join("grasp-lift-0.5s.png"), dir.join("grasp-lift-2.5s.png"));
+    fresh(&[&before, &holding]);
     let shot = |t: &str, p: &Path| format!("{t}={}", p.display());
     let (ok, stderr) = view(&[
         "grasp-lift",
@@ -191,6 +208,7 @@ fn stereo_halves_differ_by_the_disparity_of_the_virtual_camera_distance() {
     let f = 360.0 / (std::f64::consts::PI / 8.0).tan();
     for (preset, vcd) in [("ipd", 0.063), ("leap", 0.040)] {
         let shot = dir.join(format!("stereo-{preset}.png"));
+        fresh(&[&shot]);
         let (ok, stderr) = view(&[
             scene.to_str().expect("a UTF-8 path"),
             "--stereo",
