@@ -23,23 +23,39 @@ fn out_dir() -> PathBuf {
     dir
 }
 
-/// One Xvfb at a time: `xvfb-run -a` picking a free display number can race
-/// with another test's.
+/// One Xvfb at a time: two software renderers on two cores would each run
+/// at half speed, and their servers' start-up would overlap.
 static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 /// Runs the viewer under `xvfb-run` with `args`; returns whether it
-/// succeeded, and its stderr.
+/// succeeded, and its stderr. Each run gets a display number of its own
+/// (a number just freed can still have a dying server's socket), and a run
+/// whose X server could not be opened at all is retried twice: that is
+/// Xvfb starting, not the viewer.
 fn view(args: &[&str]) -> (bool, String) {
+    use std::sync::atomic::{AtomicU32, Ordering};
+    static NEXT: AtomicU32 = AtomicU32::new(0);
     let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let found = Command::new("xvfb-run").arg("--help").output().is_ok();
     assert!(found, "xvfb-run is missing: install README's apt packages (xvfb mesa-vulkan-drivers)");
-    let out = Command::new("xvfb-run")
-        .args(["-a", "-s", "-screen 0 1280x720x24"])
-        .arg(env!("CARGO_BIN_EXE_coulomb-hands-view"))
-        .args(args)
-        .output()
-        .expect("xvfb-run runs");
-    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+    let mut last = String::new();
+    for _ in 0..3 {
+        let display = 100 + (std::process::id() % 200) * 20 + NEXT.fetch_add(1, Ordering::Relaxed);
+        let out = Command::new("xvfb-run")
+            .args(["-n", &display.to_string(), "-s", "-screen 0 1280x720x24"])
+            .arg(env!("CARGO_BIN_EXE_coulomb-hands-view"))
+            .args(args)
+            .output()
+            .expect("xvfb-run runs");
+        last = String::from_utf8_lossy(&out.stderr).into_owned();
+        let no_server =
+            last.contains("XOpenDisplayFailed") || last.contains("Xvfb failed to start");
+        if out.status.success() || !no_server {
+            return (out.status.success(), last);
+        }
+        std::thread::sleep(std::time::Duration::from_secs(1));
+    }
+    (false, last)
 }
 
 /// Removes a previous run's screenshots, so only this run's can be read.
