@@ -1,8 +1,8 @@
 //! Playback in a headless app: seeking back replays from t = 0 to the very
 //! same state, pausing stops the physics, and `.` steps it once.
 
-use bevy::input::keyboard::{Key, KeyboardInput, NativeKey};
-use bevy::input::{ButtonState, InputPlugin};
+use super::keys::press;
+use bevy::input::InputPlugin;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use coulomb_hands::pipeline::Method;
@@ -42,17 +42,6 @@ fn cube(app: &App) -> Vec<u32> {
         .chain(s.rotation.to_array())
         .map(f32::to_bits)
         .collect()
-}
-
-fn press(app: &mut App, key_code: KeyCode) {
-    for state in [ButtonState::Pressed, ButtonState::Released] {
-        let logical_key = Key::Unidentified(NativeKey::Unidentified);
-        let window = Entity::PLACEHOLDER;
-        let event =
-            KeyboardInput { key_code, logical_key, state, text: None, repeat: false, window };
-        app.world_mut().write_message(event);
-        app.update();
-    }
 }
 
 #[test]

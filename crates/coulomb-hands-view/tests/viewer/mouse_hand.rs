@@ -5,7 +5,7 @@
 //! The "person" watches where the hand is (closed loop on the hand's pose),
 //! as one does on screen, and holds keys for as long as that takes.
 
-use bevy::input::keyboard::{Key, KeyboardInput, NativeKey};
+use super::keys::key;
 use bevy::input::{ButtonState, InputPlugin};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
@@ -61,14 +61,6 @@ fn hold_while(
     keys.iter().for_each(|k| key(app, *k, ButtonState::Released));
     app.update();
     held
-}
-
-/// A key event, as the window sends it.
-fn key(app: &mut App, key_code: KeyCode, state: ButtonState) {
-    let logical_key = Key::Unidentified(NativeKey::Unidentified);
-    let window = Entity::PLACEHOLDER;
-    let event = KeyboardInput { key_code, logical_key, state, text: None, repeat: false, window };
-    app.world_mut().write_message(event);
 }
 
 /// Holds `keys` for `seconds`.
