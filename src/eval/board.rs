@@ -4,6 +4,7 @@
 use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
 use crate::scene::{Material, ObjectDesc, ObjectId, StaticDesc};
 use glam::{Quat, Vec3};
+use rand::Rng;
 
 /// Squares per side.
 pub const SQUARES: usize = 8;
@@ -16,6 +17,38 @@ pub const CUBE_MASS: f32 = 0.04;
 /// The board's friction with the cube (rapier's coefficient): wood on
 /// wood.
 pub const BOARD_FRICTION: f32 = 0.45;
+
+/// One trial's squares: the cube starts on `start`, turned `yaw` (rad)
+/// about the vertical, and is to be moved to `target`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placement {
+    /// The start square (column, row).
+    pub start: (usize, usize),
+    /// The target square, never the start.
+    pub target: (usize, usize),
+    /// The cube's turn on the start square (rad, within ±0.3).
+    pub yaw: f32,
+}
+
+/// Draws a trial's squares and turn, uniformly, from `rng`.
+pub fn draw_placement(rng: &mut impl Rng) -> Placement {
+    let mut square = || (rng.random_range(0..SQUARES), rng.random_range(0..SQUARES));
+    let start = square();
+    let target = loop {
+        let t = square();
+        if t != start {
+            break t;
+        }
+    };
+    Placement { start, target, yaw: rng.random_range(-0.3..=0.3) }
+}
+
+/// `count` trials' squares and turns, drawn from `seed`: the same for the
+/// same seed.
+pub fn placements(seed: u64, count: usize) -> Vec<Placement> {
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
+    (0..count).map(|_| draw_placement(&mut rng)).collect()
+}
 
 /// A square's centre on the board (m, y = 0 on the board's surface).
 pub fn square_center(square: (usize, usize)) -> Vec3 {

@@ -85,16 +85,7 @@ fn tasks(options: &AccuracyOptions) -> Vec<Task> {
         let mut rng = ChaCha8Rng::seed_from_u64(options.seed ^ ((u as u64 + 1) * 0x9E37_79B9));
         let params = UserParams::draw(&mut rng);
         for _ in 0..options.trials {
-            let mut square =
-                || (rng.random_range(0..board::SQUARES), rng.random_range(0..board::SQUARES));
-            let start = square();
-            let target = loop {
-                let t = square();
-                if t != start {
-                    break t;
-                }
-            };
-            let yaw = rng.random_range(-0.3..=0.3);
+            let board::Placement { start, target, yaw } = board::draw_placement(&mut rng);
             out.push(Task { params, start, target, yaw, seed: rng.random() });
         }
     }
@@ -143,19 +134,21 @@ fn stats(v: &[f64]) -> (f64, f64, f64) {
     (mean, var.sqrt(), median)
 }
 
-/// One method's results from its trials.
-fn summarise(method: Method, trials: &[Trial]) -> MethodResult {
+/// One method's results from its trials, under the name `method` (a
+/// method's, or a person's row from the viewer's task).
+pub fn summarise(method: &str, trials: &[Trial]) -> MethodResult {
     let done: Vec<&Trial> = trials.iter().filter(|t| !t.failed).collect();
     let errors_mm: Vec<f64> = done.iter().map(|t| t.error as f64 * 1e3).collect();
     let (mean_mm, sd_mm, median_mm) = stats(&errors_mm);
     let times: Vec<f64> = done.iter().map(|t| t.time).collect();
     MethodResult {
-        method: method.name().into(),
+        method: method.into(),
         mean_mm,
         sd_mm,
         median_mm,
         errors_mm,
         mean_time_s: stats(&times).0,
+        times_s: times,
         failed: trials.len() - done.len(),
         drops: trials.iter().map(|t| t.drops).sum(),
     }
@@ -176,7 +169,7 @@ pub fn accuracy(
             trials.push(trial(method, task)?);
             progress(m * tasks.len() + k + 1, total);
         }
-        methods.push(summarise(method, &trials));
+        methods.push(summarise(method.name(), &trials));
     }
     Ok(AccuracyStudy {
         users: options.users,

@@ -24,12 +24,20 @@ pub enum MountPreset {
 }
 
 impl MountPreset {
-    /// The mount translation `V` of §3.3.2 (m).
-    pub fn translation(self) -> Vec3 {
+    /// The mount translation `V` of §3.3.2 as the thesis writes it (m), in
+    /// Unity's left-handed frame, where +z is forward.
+    pub fn thesis_translation(self) -> Vec3 {
         match self {
             MountPreset::OculusDk2 => Vec3::new(0.0, 0.0, 0.08),
             MountPreset::HoloLens => Vec3::new(0.0, 0.07, 0.05),
         }
+    }
+
+    /// The mount translation in this right-handed world, where forward is
+    /// −z: the thesis's `V` with z negated, so the tracker sits in front of
+    /// the eyes (m).
+    pub fn translation(self) -> Vec3 {
+        Conversion::right_to_left_handed().point(self.thesis_translation())
     }
 }
 
@@ -160,11 +168,14 @@ mod tests {
 
     #[test]
     fn mount_presets_and_units() {
-        assert_eq!(MountPreset::OculusDk2.translation(), Vec3::new(0.0, 0.0, 0.08));
-        assert_eq!(MountPreset::HoloLens.translation(), Vec3::new(0.0, 0.07, 0.05));
+        assert_eq!(MountPreset::OculusDk2.thesis_translation(), Vec3::new(0.0, 0.0, 0.08));
+        assert_eq!(MountPreset::HoloLens.thesis_translation(), Vec3::new(0.0, 0.07, 0.05));
+        // Forward is −z here: the trackers sit in front of the eyes.
+        assert_eq!(MountPreset::OculusDk2.translation(), Vec3::new(0.0, 0.0, -0.08));
+        assert_eq!(MountPreset::HoloLens.translation(), Vec3::new(0.0, 0.07, -0.05));
         let c = Conversion::mm_to_m()
             .then(Conversion::mount_translation(MountPreset::HoloLens.translation()));
-        assert!(close(c.point(Vec3::new(100.0, 0.0, -50.0)), Vec3::new(0.1, 0.07, 0.0)));
+        assert!(close(c.point(Vec3::new(100.0, 0.0, -50.0)), Vec3::new(0.1, 0.07, -0.1)));
         assert!((c.length(18.0) - 0.018).abs() < 1e-7);
     }
 
@@ -196,9 +207,10 @@ mod tests {
             (0.0, 0.0, 0.0),
             head,
         );
-        // desktop→HMD: (0, 0, -300) mm; → (0, 0, -0.3) m; + mount: (0, 0, -0.22);
-        // head yaw +90° takes -z to -x: (-0.22, 0, 0); + head: (-0.22, 1.6, 0).
-        assert!(close(c.point(Vec3::new(0.0, 300.0, 0.0)), Vec3::new(-0.22, 1.6, 0.0)));
+        // desktop→HMD: (0, 0, -300) mm; → (0, 0, -0.3) m; + the mount 8 cm in front of
+        // the eyes: (0, 0, -0.38); head yaw +90° takes -z to -x: (-0.38, 0, 0);
+        // + head: (-0.38, 1.6, 0).
+        assert!(close(c.point(Vec3::new(0.0, 300.0, 0.0)), Vec3::new(-0.38, 1.6, 0.0)));
         // Directions are rotated, not translated or scaled.
         assert!(close(c.direction(Vec3::Y), Vec3::new(-1.0, 0.0, 0.0)));
     }

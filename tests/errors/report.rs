@@ -139,6 +139,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         sd_mm: mean_mm,
         median_mm: mean_mm,
         mean_time_s: 10.0,
+        times_s: Vec::new(),
         failed: 0,
         drops: 1,
     };

@@ -7,13 +7,14 @@
 //! equal the tracker's camera distance (ICD), or the virtual objects sit at
 //! the wrong depth against the real image.
 
+use crate::head::HeadMount;
 use bevy::camera::Viewport;
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::input::mouse::{AccumulatedMouseMotion, AccumulatedMouseScroll, MouseScrollUnit};
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use coulomb_hands::hand::HandId;
-use coulomb_hands_bevy::convert::to_bevy_vec3;
+use coulomb_hands_bevy::convert::{to_bevy_vec3, transform};
 use coulomb_hands_bevy::interaction::Interaction;
 
 /// Radians of turn per pixel of drag.
@@ -121,6 +122,19 @@ impl std::str::FromStr for Stereo {
     }
 }
 
+/// The camera is the eyes of this head (§3.8.1): a head-mounted
+/// recording is seen from where it was made, and the mouse does not move it.
+#[derive(Resource, Debug, Clone, Copy)]
+pub struct HeadView(pub HeadMount);
+
+impl HeadView {
+    /// The camera's transform: at the eyes, looking along the head's −z.
+    pub fn transform(&self) -> Transform {
+        let (position, rotation) = self.0.eyes();
+        transform(position, rotation)
+    }
+}
+
 /// One camera of a stereo pair: how far it sits right of the view's centre
 /// (m, negative for the left eye).
 #[derive(Component, Debug, Clone, Copy)]
@@ -128,24 +142,39 @@ pub struct Eye(pub f32);
 
 /// The camera, or with [`Stereo`] the two eyes' cameras (the left one draws
 /// the HUD), with a tone mapping that needs no lookup tables.
+/// A head-mounted view has no orbit: its eyes stay at the head.
 pub fn spawn_camera(
     mut commands: Commands,
     start: Option<Res<StartView>>,
     stereo: Option<Res<Stereo>>,
+    head: Option<Res<HeadView>>,
 ) {
     let mut orbit = Orbit::default();
     if let Some(v) = start {
         (orbit.yaw, orbit.pitch) = (v.yaw_deg.to_radians(), v.pitch_deg.to_radians());
         orbit.distance = v.distance;
     }
-    let camera = (Camera3d::default(), Tonemapping::AcesFitted, orbit.transform(), orbit);
-    let Some(stereo) = stereo else {
-        commands.spawn(camera);
-        return;
+    let view = head.as_deref().map_or_else(|| orbit.transform(), HeadView::transform);
+    let eyes = match stereo.as_deref() {
+        None => vec![None],
+        Some(s) => vec![Some(Eye(-s.vcd / 2.0)), Some(Eye(s.vcd / 2.0))],
     };
-    commands.spawn((camera.clone(), Eye(-stereo.vcd / 2.0), IsDefaultUiCamera));
-    let right = Camera { order: 1, ..default() };
-    commands.spawn((camera, right, Eye(stereo.vcd / 2.0)));
+    for (order, eye) in eyes.into_iter().enumerate() {
+        let mut transform = view;
+        let camera = Camera { order: order as isize, ..default() };
+        let mut entity = commands.spawn((Camera3d::default(), camera, Tonemapping::AcesFitted));
+        if let Some(eye) = eye {
+            transform.translation += transform.right() * eye.0;
+            entity.insert(eye);
+        }
+        entity.insert(transform);
+        if head.is_none() {
+            entity.insert(orbit);
+        }
+        if order == 0 && stereo.is_some() {
+            entity.insert(IsDefaultUiCamera);
+        }
+    }
 }
 
 /// Each eye draws into its half of the window.

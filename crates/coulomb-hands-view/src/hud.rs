@@ -108,10 +108,10 @@ pub fn spawn_hud(mut commands: Commands, transport: Res<Transport>) {
 /// Writes the HUD and fills the timeline to the current time.
 pub fn update_hud(
     interaction: Option<NonSend<Interaction>>,
-    viewed: Res<Viewed>,
-    transport: Res<Transport>,
+    (viewed, transport): (Res<Viewed>, Res<Transport>),
     timer: Res<StepTimer>,
     hand: Res<MouseHand>,
+    task: Option<Res<crate::task::ChessboardTask>>,
     mut text: Query<&mut Text, With<HudText>>,
     mut fill: Query<&mut Node, With<TimelineFill>>,
 ) {
@@ -145,6 +145,9 @@ pub fn update_hud(
         lines.push(
             "      JL IK UO turn  G/H curl/open  1-5 finger (Shift opens)  T thumb".to_string(),
         );
+    }
+    if let Some(task) = task {
+        lines.extend(task.hud_lines());
     }
     for mut text in &mut text {
         text.0 = lines.join("\n");

@@ -8,16 +8,20 @@
 //! whether a tick steps ([`transport`]), and poses the mouse hand
 //! ([`mouse_hand`]).
 
+pub mod ar;
 pub mod arrows;
 pub mod camera;
 pub mod display;
 pub mod hand_visual;
+pub mod head;
 pub mod hud;
 pub mod mouse_hand;
 pub mod ready;
 pub mod shapes;
+pub mod sound;
 pub mod source;
 pub mod stage;
+pub mod task;
 pub mod transport;
 
 use bevy::app::{RunFixedMainLoop, RunFixedMainLoopSystems};
@@ -46,6 +50,12 @@ pub struct Viewer {
     pub skeleton: bool,
     /// Side-by-side stereo, if asked for.
     pub stereo: Option<camera::Stereo>,
+    /// AR mode's background image: the hand becomes an occlusion mask over it.
+    pub background: Option<ar::Background>,
+    /// No contact sound, even with an audio device.
+    pub mute: bool,
+    /// The chessboard task's session, when the source is its trial.
+    pub task: Option<task::ChessboardTask>,
 }
 
 impl Viewer {
@@ -53,6 +63,7 @@ impl Viewer {
     /// interaction built and ready at t = 0.
     pub fn app(self) -> Result<App, LoadError> {
         let (interaction, inlet) = self.source.build(self.method)?;
+        let head = self.source.head().copied();
         let mut transport = Transport::new(self.source.duration(), self.shots, self.exit_after);
         transport.paused = self.paused;
         let mut hand = mouse_hand::MouseHand::default();
@@ -64,7 +75,10 @@ impl Viewer {
         };
         let mut app = App::new();
         app.add_plugins((
-            DefaultPlugins.set(WindowPlugin { primary_window: Some(window), ..default() }),
+            // Audio is opened by the sound plugin, and only if there is a device.
+            DefaultPlugins
+                .set(WindowPlugin { primary_window: Some(window), ..default() })
+                .disable::<bevy::audio::AudioPlugin>(),
             CoulombHandsPlugin,
             ViewerPlugin,
             ready::RendererReadyPlugin,
@@ -74,11 +88,22 @@ impl Viewer {
         .insert_resource(hand)
         .insert_resource(Viewed { source: self.source, method: self.method });
         app.insert_resource(arrows::ShowSkeleton(self.skeleton));
+        let play = !self.mute && sound::audio_device_present();
+        app.add_plugins(sound::SoundPlugin { play });
         if let Some(view) = self.view {
             app.insert_resource(view);
         }
         if let Some(stereo) = self.stereo {
             app.insert_resource(stereo);
+        }
+        if let Some(task) = self.task {
+            app.insert_resource(task);
+        }
+        if let Some(background) = self.background {
+            app.insert_resource(background).add_plugins(ar::ArPlugin);
+        }
+        if let Some(head) = head {
+            app.insert_resource(camera::HeadView(head));
         }
 
         Ok(app)
@@ -99,6 +124,7 @@ impl Plugin for ViewerPlugin {
             .init_resource::<stage::Scenery>()
             .init_resource::<hud::StepTimer>()
             .init_resource::<hud::Scrubbing>()
+            .init_resource::<task::BoardTiles>()
             .add_plugins(transport::TransportPlugin)
             .add_systems(
                 FixedUpdate,
@@ -122,6 +148,7 @@ impl Plugin for ViewerPlugin {
                 Update,
                 (
                     hud::scrub_timeline.after(transport::playback_keys).before(transport::seek),
+                    task::finish_on_enter.after(transport::playback_keys).before(transport::seek),
                     arrows::toggle_skeleton,
                     mouse_hand::drive_mouse_hand.after(transport::seek),
                     (camera::frame_view, camera::orbit_camera, camera::fit_eyes).chain(),
@@ -132,6 +159,7 @@ impl Plugin for ViewerPlugin {
                 (
                     stage::dress_scenery,
                     stage::dress_objects,
+                    task::draw_board,
                     hand_visual::draw_hands,
                     arrows::draw_arrows,
                     arrows::draw_skeleton,

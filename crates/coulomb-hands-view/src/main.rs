@@ -3,10 +3,14 @@
 //! and keyboard.
 
 use clap::Parser;
+use coulomb_hands::input::convert::MountPreset;
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::run::replay::GraspObject;
+use coulomb_hands_view::ar::Background;
 use coulomb_hands_view::camera::{StartView, Stereo};
+use coulomb_hands_view::head::{HeadMount, HeadPose, parse_mount};
 use coulomb_hands_view::source::{LoadOptions, Source};
+use coulomb_hands_view::task::{ChessboardTask, TaskOptions};
 use coulomb_hands_view::transport::Shot;
 use coulomb_hands_view::{Viewer, display};
 use std::process::ExitCode;
@@ -46,8 +50,40 @@ struct Args {
     #[arg(long, value_name = "ipd|leap|MM")]
     stereo: Option<Stereo>,
     /// Where the camera starts: yaw and pitch in degrees, distance in metres (default 0,32,0.55).
-    #[arg(long, value_name = "YAW,PITCH,DISTANCE")]
+    #[arg(long, value_name = "YAW,PITCH,DISTANCE", conflicts_with = "head_mounted")]
     view: Option<StartView>,
+    /// With a Leap recording made on a headset (§3.8.1): the tracker's mount, dk2 (8 cm ahead
+    /// of the eyes) or hololens (7 cm up, 5 cm ahead). The camera is then the wearer's eyes.
+    #[arg(long, value_name = "dk2|hololens", value_parser = parse_mount)]
+    head_mounted: Option<MountPreset>,
+    /// AR mode (§3.6): draw over this image (PNG or JPEG; a pass-through camera frame); the
+    /// hand, and the scenery, become masks that hide the virtual objects behind them.
+    #[arg(long, value_name = "IMAGE")]
+    background: Option<std::path::PathBuf>,
+    /// The placement task of the thesis's §5.2 for a person (chessboard): move the cube to the
+    /// yellow square with the mouse hand, then Enter; trial after trial.
+    #[arg(long, value_name = "chessboard", value_parser = ["chessboard"], conflicts_with = "input")]
+    task: Option<String>,
+    /// With --task: trials in the session.
+    #[arg(long, default_value_t = 20, requires = "task")]
+    trials: usize,
+    /// With --task: the seed of the squares (the same seed, the same trials).
+    #[arg(long, default_value_t = 1, requires = "task")]
+    seed: u64,
+    /// With --task: add this person's row to this accuracy JSON (`eval accuracy --json`'s),
+    /// rewritten after every trial; made if missing.
+    #[arg(long, value_name = "FILE", requires = "task")]
+    log: Option<std::path::PathBuf>,
+    /// With --task: the person's name, for the row `METHOD (NAME)`.
+    #[arg(long, default_value = "person", requires = "task")]
+    person: String,
+    /// No contact sound (it is off anyway when there is no audio device).
+    #[arg(long)]
+    mute: bool,
+    /// With --head-mounted: the eyes' position in metres, and yaw and pitch in degrees
+    /// (default 0,0.5,0.35,0,-30: hands held ahead land about 20 cm over the origin).
+    #[arg(long, value_name = "X,Y,Z,YAW,PITCH", requires = "head_mounted")]
+    head: Option<HeadPose>,
 }
 
 fn main() -> ExitCode {
@@ -56,8 +92,26 @@ fn main() -> ExitCode {
         method: args.method,
         scene: args.scene,
         object_at_grasp: args.object_at_grasp,
+        head: args
+            .head_mounted
+            .map(|mount| HeadMount { mount, head: args.head.unwrap_or_default() }),
     };
-    let source = match Source::load(args.input.as_deref(), &options) {
+    let task = args.task.as_ref().map(|_| {
+        let log = args.log.clone();
+        let options =
+            TaskOptions { trials: args.trials, seed: args.seed, log, person: args.person };
+        ChessboardTask::drawn(options, args.method)
+    });
+    if let Some(e) = task.as_ref().and_then(task_error) {
+        eprintln!("error: {e}");
+        return ExitCode::FAILURE;
+    }
+    let loaded = match &task {
+        Some(_) if options.for_recording() => Err("--task takes no recording options".into()),
+        Some(task) => Ok(task.source()),
+        None => Source::load(args.input.as_deref(), &options),
+    };
+    let source = match loaded {
         Ok(source) => source,
         Err(e) => {
             eprintln!("error: {e}");
@@ -79,6 +133,13 @@ fn main() -> ExitCode {
             return ExitCode::FAILURE;
         }
     }
+    let background = match args.background.as_deref().map(Background::load).transpose() {
+        Ok(background) => background,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
     if let Err(e) = display::check() {
         eprintln!("error: {e}");
         return ExitCode::FAILURE;
@@ -92,6 +153,9 @@ fn main() -> ExitCode {
         view: args.view,
         skeleton: args.skeleton,
         stereo: args.stereo,
+        background,
+        mute: args.mute,
+        task,
     };
     let mut app = match viewer.app() {
         Ok(app) => app,
@@ -104,4 +168,13 @@ fn main() -> ExitCode {
         bevy::app::AppExit::Success => ExitCode::SUCCESS,
         bevy::app::AppExit::Error(_) => ExitCode::FAILURE,
     }
+}
+
+/// Why a task session cannot start: no trials, or a log that is not an
+/// accuracy JSON (checked before any trial, so none is lost to it).
+fn task_error(task: &ChessboardTask) -> Option<String> {
+    if task.current().is_none() {
+        return Some("--trials must be at least 1".into());
+    }
+    task.check_log().err()
 }

@@ -5,6 +5,8 @@
 //! number of times: a timeline scrub back in time replays from t = 0, which
 //! is exact because a run is deterministic.
 
+use crate::head::HeadMount;
+use coulomb_hands::eval::board::{self, Placement};
 use coulomb_hands::hand::Side;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld, Method};
@@ -40,6 +42,16 @@ pub enum Source {
         scene: Option<Scene>,
         /// The object for each closing.
         object: Option<GraspObject>,
+        /// The head the tracker was worn on, if it was (§3.8.1).
+        head: Option<HeadMount>,
+    },
+    /// One trial of the chessboard placement task (§5.2): the board, the
+    /// cube on its start square, and the mouse hand.
+    Task {
+        /// The trial's number, from 1.
+        trial: usize,
+        /// Its squares.
+        placement: Placement,
     },
     /// A scene with one hand driven by mouse and keyboard.
     Scene {
@@ -59,7 +71,19 @@ pub struct LoadOptions {
     pub scene: Option<std::path::PathBuf>,
     /// An object at each closing of a recording.
     pub object_at_grasp: Option<GraspObject>,
+    /// A recording's tracker was worn on this head (§3.8.1).
+    pub head: Option<HeadMount>,
 }
+
+impl LoadOptions {
+    /// The options that only a recording takes.
+    pub fn for_recording(&self) -> bool {
+        self.scene.is_some() || self.object_at_grasp.is_some() || self.head.is_some()
+    }
+}
+
+/// Why a recording's options were refused for another input.
+const RECORDING_ONLY: &str = "--scene, --object-at-grasp and --head-mounted go with a recording";
 
 impl Source {
     /// Loads `input`: nothing (the desk scene), a shipped scenario's name,
@@ -68,29 +92,42 @@ impl Source {
     /// it has `hands`, else a scene.
     pub fn load(input: Option<&str>, options: &LoadOptions) -> Result<Source, LoadError> {
         let Some(input) = input else {
-            if options.scene.is_some() || options.object_at_grasp.is_some() {
-                return Err("--scene and --object-at-grasp go with a recording".into());
+            if options.for_recording() {
+                return Err(RECORDING_ONLY.into());
             }
             let scene = Scene::parse("scenes/desk.json", DESK)?;
             return Ok(Source::Scene { name: "desk".into(), scene });
         };
         let recording = !is_scenario(input) && Path::new(input).exists() && is_recording(input);
-        if !recording && (options.scene.is_some() || options.object_at_grasp.is_some()) {
-            let why = "--scene and --object-at-grasp go with a recording";
-            return Err(format!("{input}: {why}").into());
+        if !recording && options.for_recording() {
+            return Err(format!("{input}: {RECORDING_ONLY}").into());
         }
         if !Path::new(input).exists() || is_scenario(input) {
             return Ok(Source::Scenario(Box::new(Scenario::find(input)?)));
         }
         if recording {
             let recording = coulomb_hands::input::recording::load(Path::new(input))?;
-            let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
+            let playback = match &options.head {
+                Some(head) => {
+                    recording.playback_through(&head.conversion(&recording)?, DEFAULT_GRACE)
+                }
+                None => recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE),
+            }?;
             let scene = options.scene.as_deref().map(Scene::load).transpose()?;
             let name = recording.source_name.clone();
-            let object = options.object_at_grasp;
-            return Ok(Source::Recording { name, playback: Box::new(playback), scene, object });
+            let (object, head, playback) =
+                (options.object_at_grasp, options.head, Box::new(playback));
+            return Ok(Source::Recording { name, playback, scene, object, head });
         }
         Ok(Source::Scene { name: input.to_string(), scene: Scene::load(Path::new(input))? })
+    }
+
+    /// The head a recording's tracker was worn on, whose eyes the camera takes.
+    pub fn head(&self) -> Option<&HeadMount> {
+        match self {
+            Source::Recording { head, .. } => head.as_ref(),
+            _ => None,
+        }
     }
 
     /// A name for the HUD.
@@ -98,6 +135,7 @@ impl Source {
         match self {
             Source::Scenario(s) => &s.name,
             Source::Recording { name, .. } | Source::Scene { name, .. } => name,
+            Source::Task { .. } => "chessboard task",
         }
     }
 
@@ -107,7 +145,7 @@ impl Source {
         match self {
             Source::Scenario(s) => Some(f64::from(s.duration)),
             Source::Recording { playback, .. } => Some(playback.duration),
-            Source::Scene { .. } => None,
+            Source::Scene { .. } | Source::Task { .. } => None,
         }
     }
 
@@ -133,13 +171,22 @@ impl Source {
                 Ok((interaction, None))
             }
             Source::Scene { scene, .. } => {
-                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
-                let (hand, inlet) = PushedHand::new(Side::Right);
-                interaction.add_hand(hand);
-                Ok((interaction, Some(inlet)))
+                Ok(with_mouse_hand(Interaction::new(world(Some(scene), method, false)?)))
+            }
+            Source::Task { placement, .. } => {
+                let config = method.config(InteractionConfig::default());
+                let (world, _cube) = board::world(config, placement.start, placement.yaw)?;
+                Ok(with_mouse_hand(Interaction::new(world)))
             }
         }
     }
+}
+
+/// `interaction` with a right hand the mouse drives, and its inlet.
+fn with_mouse_hand(mut interaction: Interaction) -> (Interaction, Option<HandInlet>) {
+    let (hand, inlet) = PushedHand::new(Side::Right);
+    interaction.add_hand(hand);
+    (interaction, Some(inlet))
 }
 
 /// A world under `method` with `scene` in it, on the replays' ground at

@@ -22,6 +22,10 @@ const SCENERY: Color = Color::srgb(0.34, 0.37, 0.42);
 /// The background.
 pub const BACKGROUND: Color = Color::srgb(0.09, 0.10, 0.13);
 
+/// A mesh of the static scenery (which AR mode turns into a mask).
+#[derive(Component, Debug, Clone, Copy)]
+pub struct SceneryMesh;
+
 /// The static scenery drawn, for the interaction it belongs to.
 #[derive(Resource, Debug, Default)]
 pub struct Scenery {
@@ -90,7 +94,8 @@ pub fn dress_scenery(
         ..default()
     });
     for (place, mesh) in static_meshes(interaction.world()) {
-        let entity = (Mesh3d(meshes.add(mesh)), MeshMaterial3d(material.clone()), place);
+        let entity =
+            (Mesh3d(meshes.add(mesh)), MeshMaterial3d(material.clone()), place, SceneryMesh);
         scenery.entities.push(commands.spawn(entity).id());
     }
 }

@@ -98,6 +98,10 @@ pub struct MethodResult {
     /// Mean time per trial (s).
     #[serde(deserialize_with = "null_as_nan")]
     pub mean_time_s: f64,
+    /// Time of each completed trial (s), in the order of `errors_mm`
+    /// (absent from files written before it was kept).
+    #[serde(default)]
+    pub times_s: Vec<f64>,
     /// Trials not completed.
     pub failed: usize,
     /// Accidental drops.

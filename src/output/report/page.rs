@@ -253,6 +253,12 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
          square to a target square of a chessboard.</p>",
         s.users, s.trials, s.seed
     );
+    if s.methods.iter().any(|m| m.method.ends_with(')')) {
+        p.push_str(
+            "<p>A row named <code>METHOD (NAME)</code> is a person's trials of the same task in \
+             the viewer (<code>coulomb-hands-view --task chessboard</code>).</p>\n",
+        );
+    }
     let caption = "Log axis. Blue: this study, each dot a completed trial; box from the first \
                    to the third quartile, line at the median, whiskers to the farthest trial \
                    within 1.5 interquartile ranges. Red: the thesis's Table 5.2, mean ± sd \

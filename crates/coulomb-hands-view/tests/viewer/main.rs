@@ -1,8 +1,11 @@
 //! The viewer's integration tests, in one binary: each test binary links all of Bevy, so
 //! one binary instead of four saves CI minutes and gigabytes of disk.
 
+mod ar;
 mod hand_visual;
+mod head;
 mod keys;
 mod mouse_hand;
+mod task;
 mod transport;
 mod window;

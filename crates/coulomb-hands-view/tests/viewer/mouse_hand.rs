@@ -15,7 +15,9 @@ use coulomb_hands::scene::ObjectId;
 use coulomb_hands_bevy::CoulombHandsPlugin;
 use coulomb_hands_bevy::interaction::Interaction;
 use coulomb_hands_view::mouse_hand::{MouseHand, drive_mouse_hand};
+use coulomb_hands_view::sound::{ContactSound, SoundPlugin, loudness};
 use coulomb_hands_view::source::{LoadOptions, Source};
+use coulomb_hands_view::transport::{Transport, TransportPlugin, Viewed, seek};
 use std::time::Duration;
 
 /// One frame (s): the app runs at 100 frames per second.
@@ -25,23 +27,32 @@ const CUBE: ObjectId = ObjectId(0);
 const CUBE_HALF: f32 = 0.02;
 
 fn desk() -> App {
-    let source = Source::load(None, &LoadOptions::default()).expect("the desk scene");
+    app_of(Source::load(None, &LoadOptions::default()).expect("the desk scene"))
+}
+
+/// An app of `source` with the mouse hand, the transport and the taps, at
+/// 100 frames per second.
+pub fn app_of(source: Source) -> App {
     let (interaction, inlet) = source.build(Method::Coulomb).expect("a world");
     assert!(inlet.is_some(), "a scene has a mouse hand");
     let mut hand = MouseHand::default();
     hand.attach(inlet);
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin))
+    // Silent, as with no audio device: the taps are worked out, not played.
+    let sound = SoundPlugin { play: false };
+    app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin, TransportPlugin, sound))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(FRAME)))
         .insert_non_send(interaction)
         .insert_resource(hand)
-        .add_systems(Update, drive_mouse_hand);
+        .insert_resource(Transport::new(source.duration(), Vec::new(), None))
+        .insert_resource(Viewed { source, method: Method::Coulomb })
+        .add_systems(Update, drive_mouse_hand.after(seek));
     app.update();
     app
 }
 
 /// Holds `keys` while `go` says so (at most `limit` s); returns the time held.
-fn hold_while(
+pub fn hold_while(
     app: &mut App,
     keys: &[KeyCode],
     limit: f32,
@@ -64,31 +75,31 @@ fn hold_while(
 }
 
 /// Holds `keys` for `seconds`.
-fn hold(app: &mut App, keys: &[KeyCode], seconds: f32) {
+pub fn hold(app: &mut App, keys: &[KeyCode], seconds: f32) {
     hold_while(app, keys, seconds, |_| true);
 }
 
-fn hand(app: &App) -> &MouseHand {
+pub fn hand(app: &App) -> &MouseHand {
     app.world().resource::<MouseHand>()
 }
 
-fn cube(app: &App) -> glam::Vec3 {
+pub fn cube(app: &App) -> glam::Vec3 {
     let world = app.world().non_send::<Interaction>();
     world.world().object_state(CUBE).expect("the cube").position
 }
 
 /// The middle fingertip's end (world, m).
-fn fingertip(app: &App) -> glam::Vec3 {
+pub fn fingertip(app: &App) -> glam::Vec3 {
     tip(app, 2)
 }
 
 /// The end of finger `f`'s last bone (thumb 0; world, m).
-fn tip(app: &App, f: usize) -> glam::Vec3 {
+pub fn tip(app: &App, f: usize) -> glam::Vec3 {
     hand(app).sample().pose.fingers[f][2].b
 }
 
 /// Finger `f`'s radius (m).
-fn tip_radius(app: &App, f: usize) -> f32 {
+pub fn tip_radius(app: &App, f: usize) -> f32 {
     hand(app).sample().pose.fingers[f][2].radius
 }
 
@@ -186,4 +197,37 @@ fn the_hand_grasps_lifts_and_drops_the_cube() {
     hold(&mut app, &[], 0.5);
     let dropped = cube(&app);
     assert!((dropped.y - CUBE_HALF).abs() < 0.005, "back on the table: {dropped}");
+}
+
+fn taps(app: &App) -> &[f32] {
+    &app.world().resource::<ContactSound>().taps
+}
+
+/// A touch taps, louder the faster the fingertips close on the cube: from 3
+/// cm behind it, the hand moves forward at the fine rate (0.03 m/s), then in
+/// a second run at the normal one (0.12 m/s). Each first tap's volume is
+/// that of its speed, and no sound is queued without an audio device.
+#[test]
+fn a_faster_touch_taps_louder() {
+    let mut first = Vec::new();
+    for (keys, speed) in
+        [(&[KeyCode::KeyW, KeyCode::ShiftLeft][..], 0.03), (&[KeyCode::KeyW], 0.12)]
+    {
+        let mut app = desk();
+        let behind = cube(&app).z - CUBE_HALF - 0.03;
+        hold_while(&mut app, &[KeyCode::KeyS], 2.0, |a| fingertip(a).z > behind);
+        hold_while(&mut app, &[KeyCode::KeyQ], 2.0, |a| hand(a).palm.y > 0.03);
+        let before = taps(&app).len();
+        hold_while(&mut app, keys, 3.0, |a| taps(a).len() == before);
+        let tap = *taps(&app).get(before).expect("the touch taps");
+        assert!(
+            (tap - loudness(speed)).abs() < 0.01,
+            "at {speed} m/s: {tap}, not {}",
+            loudness(speed)
+        );
+        let queued = app.world_mut().query::<&bevy::audio::AudioPlayer>().iter(app.world()).count();
+        assert_eq!(queued, 0, "nothing to play without a device");
+        first.push(tap);
+    }
+    assert!(first[1] > first[0] + 0.04, "the faster touch is louder: {first:?}");
 }

@@ -17,7 +17,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// Where the screenshots go (kept for a look after the test).
-fn out_dir() -> PathBuf {
+pub fn out_dir() -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("window");
     std::fs::create_dir_all(&dir).expect("a directory for screenshots");
     dir
@@ -32,7 +32,7 @@ static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// (a number just freed can still have a dying server's socket), and a run
 /// whose X server could not be opened at all is retried twice: that is
 /// Xvfb starting, not the viewer.
-fn view(args: &[&str]) -> (bool, String) {
+pub fn view(args: &[&str]) -> (bool, String) {
     use std::sync::atomic::{AtomicU32, Ordering};
     static NEXT: AtomicU32 = AtomicU32::new(0);
     let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -59,7 +59,7 @@ fn view(args: &[&str]) -> (bool, String) {
 }
 
 /// Removes a previous run's screenshots, so only this run's can be read.
-fn fresh(paths: &[&Path]) {
+pub fn fresh(paths: &[&Path]) {
     for path in paths {
         match std::fs::remove_file(path) {
             Err(e) if e.kind() != std::io::ErrorKind::NotFound => panic!("{path:?}: {e}"),
@@ -69,7 +69,7 @@ fn fresh(paths: &[&Path]) {
 }
 
 /// Hue (degrees), saturation and value of a pixel, each of s and v in [0, 1].
-fn hsv(p: &image::Rgb<u8>) -> (f32, f32, f32) {
+pub fn hsv(p: &image::Rgb<u8>) -> (f32, f32, f32) {
     let [r, g, b] = p.0.map(|c| f32::from(c) / 255.0);
     let (max, min) = (r.max(g).max(b), r.min(g).min(b));
     let d = max - min;
@@ -86,7 +86,7 @@ fn hsv(p: &image::Rgb<u8>) -> (f32, f32, f32) {
 }
 
 /// Pixels whose hue (degrees), saturation and value pass `test`.
-fn count(img: &RgbImage, test: impl Fn(f32, f32, f32) -> bool) -> usize {
+pub fn count(img: &RgbImage, test: impl Fn(f32, f32, f32) -> bool) -> usize {
     img.pixels().filter(|p| matches!(hsv(p), (h, s, v) if test(h, s, v))).count()
 }
 
@@ -106,13 +106,18 @@ fn opaque_skin(img: &RgbImage) -> usize {
 }
 
 /// Pixels of any skin-toned hue, see-through or not.
-fn any_skin(img: &RgbImage) -> usize {
+pub fn any_skin(img: &RgbImage) -> usize {
     count(img, |h, s, v| SKIN_HUES.contains(&h) && s > 0.12 && v > 0.2)
 }
 
 /// Pixels of the teal cube.
-fn teal(img: &RgbImage) -> usize {
-    count(img, |h, s, v| (170.0..200.0).contains(&h) && s > 0.4 && v > 0.25)
+pub fn teal(img: &RgbImage) -> usize {
+    img.pixels().filter(|p| is_teal(p)).count()
+}
+
+/// Whether a pixel is the teal cube's.
+pub fn is_teal(p: &image::Rgb<u8>) -> bool {
+    matches!(hsv(p), (h, s, v) if (170.0..200.0).contains(&h) && s > 0.4 && v > 0.25)
 }
 
 /// Distinct colours, a blank image having one or two.
@@ -141,6 +146,11 @@ fn grasp_lift_draws_the_hand_see_through_then_opaque_with_force_arrows() {
         "2.5",
     ]);
     assert!(ok, "the viewer failed:\n{stderr}");
+    // With no audio device (as under CI) it is silent without a word: neither ALSA's
+    // complaints nor Bevy's warning, since the audio output is never opened.
+    let device = coulomb_hands_view::sound::audio_device_present();
+    let quiet = !stderr.contains("ALSA") && !stderr.contains("No audio device");
+    assert!(device || quiet, "no audio device, yet:\n{stderr}");
     let before = image::open(&before).expect("the 0.5 s screenshot").to_rgb8();
     let holding = image::open(&holding).expect("the 2.5 s screenshot").to_rgb8();
     for img in [&before, &holding] {
@@ -159,7 +169,7 @@ fn grasp_lift_draws_the_hand_see_through_then_opaque_with_force_arrows() {
 
 /// The viewer's stderr and exit status for `args`, without a window.
 /// `display` is the `DISPLAY` to set, or none.
-fn refused(args: &[&std::ffi::OsStr], display: Option<&str>) -> String {
+pub fn refused(args: &[&std::ffi::OsStr], display: Option<&str>) -> String {
     let mut command = Command::new(env!("CARGO_BIN_EXE_coulomb-hands-view"));
     command.args(args).env_remove("WAYLAND_DISPLAY");
     match display {
@@ -202,7 +212,7 @@ fn with_no_display_it_says_so() {
 fn teal_column(img: &RgbImage, columns: std::ops::Range<u32>) -> Option<f64> {
     let (mut sum, mut n) = (0.0, 0.0);
     for (x, _, p) in img.enumerate_pixels().filter(|(x, ..)| columns.contains(x)) {
-        if matches!(hsv(p), (h, s, v) if (170.0..200.0).contains(&h) && s > 0.4 && v > 0.25) {
+        if is_teal(p) {
             (sum, n) = (sum + f64::from(x - columns.start), n + 1.0);
         }
     }

@@ -1,0 +1,242 @@
+//! The placement task of §5.2 (Table 5.2), for people: a cube on a
+//! chessboard is to be moved to the highlighted square, trial after trial,
+//! with the mouse hand (or any hand the viewer drives). Enter ends a trial.
+//!
+//! Each trial's placement error and time are logged to the JSON that
+//! `coulomb-hands eval accuracy --json` writes, as one more row, named for
+//! the method and the person. So `coulomb-hands report --accuracy FILE`
+//! shows a person's results beside the synthetic users'. The file is
+//! rewritten after every trial, so quitting early loses nothing.
+
+use crate::source::Source;
+use crate::transport::{Transport, Viewed};
+use bevy::prelude::*;
+use coulomb_hands::eval::board::{self, Placement};
+use coulomb_hands::eval::{AccuracyStudy, Trial, summarise, thesis_table};
+use coulomb_hands::pipeline::{InteractionWorld, Method};
+use coulomb_hands::scene::ObjectId;
+use coulomb_hands_bevy::interaction::Interaction;
+use std::path::PathBuf;
+
+/// A trial ended sooner than this after it began (s) is ignored: a key
+/// still held from the last one.
+const MIN_TRIAL: f64 = 0.5;
+/// The task's cube: the only object on the board.
+const CUBE: ObjectId = ObjectId(0);
+
+/// The board's light and dark squares and the target's highlight.
+const LIGHT: Color = Color::srgb(0.82, 0.80, 0.74);
+const DARK: Color = Color::srgb(0.30, 0.29, 0.27);
+const TARGET: Color = Color::srgb(0.96, 0.78, 0.10);
+
+/// How a person's session runs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TaskOptions {
+    /// Trials in the session (the thesis had 20 per person).
+    pub trials: usize,
+    /// The seed of the squares: the same seed, the same trials.
+    pub seed: u64,
+    /// The accuracy JSON to add this person's row to (made if missing).
+    pub log: Option<PathBuf>,
+    /// The person's name in the row: `METHOD (NAME)`.
+    pub person: String,
+}
+
+/// The session: its trials, and the results so far.
+#[derive(Resource, Debug, Clone)]
+pub struct ChessboardTask {
+    options: TaskOptions,
+    method: Method,
+    placements: Vec<Placement>,
+    /// The finished trials, in order.
+    pub results: Vec<Trial>,
+    /// The last log write's failure, shown on the HUD.
+    pub log_error: Option<String>,
+}
+
+impl ChessboardTask {
+    /// A session of `placements` under `method`.
+    pub fn new(options: TaskOptions, method: Method, placements: Vec<Placement>) -> Self {
+        ChessboardTask { options, method, placements, results: Vec::new(), log_error: None }
+    }
+
+    /// A session of `options.trials` trials drawn from `options.seed`.
+    pub fn drawn(options: TaskOptions, method: Method) -> Self {
+        let placements = board::placements(options.seed, options.trials);
+        Self::new(options, method, placements)
+    }
+
+    /// The trial under way (its index and squares), or `None` when all are done.
+    pub fn current(&self) -> Option<(usize, Placement)> {
+        let i = self.results.len();
+        self.placements.get(i).map(|p| (i, *p))
+    }
+
+    /// The source of the trial under way (the last one's, once all are done).
+    pub fn source(&self) -> Source {
+        let i = self.results.len().min(self.placements.len().saturating_sub(1));
+        Source::Task { trial: i + 1, placement: self.placements[i] }
+    }
+
+    /// The row's name: the method's, and the person's.
+    pub fn row_name(&self) -> String {
+        format!("{} ({})", self.method.name(), self.options.person)
+    }
+
+    /// Ends the trial under way on `world`: the cube's horizontal distance
+    /// from the target square's centre, and the time taken. Returns it, or
+    /// `None` if no trial is under way or it has only just begun.
+    pub fn finish(&mut self, world: &InteractionWorld) -> Option<Trial> {
+        let (_, placement) = self.current()?;
+        let time = world.time();
+        if time < MIN_TRIAL {
+            return None;
+        }
+        let cube = world.object_state(CUBE).ok()?.position;
+        let target = board::square_center(placement.target);
+        let error = ((cube - target) * glam::Vec3::new(1.0, 0.0, 1.0)).length();
+        let failed = !board::on_board(cube);
+        let trial = Trial { error, time, failed, drops: 0 };
+        self.results.push(trial);
+        self.log_error = self.write_log().err();
+        Some(trial)
+    }
+
+    /// Whether the log can be written: an existing file must be an accuracy
+    /// JSON, a new one's directory must exist. Checked before the first
+    /// trial, so no trial is lost to a bad path.
+    pub fn check_log(&self) -> Result<(), String> {
+        let Some(path) = &self.options.log else { return Ok(()) };
+        if path.exists() {
+            return AccuracyStudy::load(path).map(|_| ()).map_err(|e| e.to_string());
+        }
+        match path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            Some(dir) if !dir.is_dir() => {
+                Err(format!("{}: no such directory for the log", dir.display()))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// Writes the results so far into the log: this person's row replaced
+    /// or added, every other row kept.
+    pub fn write_log(&self) -> Result<(), String> {
+        let Some(path) = &self.options.log else { return Ok(()) };
+        let mut study = match path.exists() {
+            true => AccuracyStudy::load(path).map_err(|e| e.to_string())?,
+            false => AccuracyStudy {
+                users: 0,
+                trials: 0,
+                seed: self.options.seed,
+                methods: Vec::new(),
+                thesis: thesis_table(),
+            },
+        };
+        let row = summarise(&self.row_name(), &self.results);
+        match study.methods.iter_mut().find(|m| m.method == row.method) {
+            Some(old) => *old = row,
+            None => study.methods.push(row),
+        }
+        let text = serde_json::to_string_pretty(&study).map_err(|e| e.to_string())?;
+        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))
+    }
+
+    /// The HUD's lines.
+    pub fn hud_lines(&self) -> Vec<String> {
+        let total = self.placements.len();
+        let mut lines = vec![match self.current() {
+            Some((i, p)) => format!(
+                "chessboard trial {}/{total}: move the cube from {} to the yellow square {}, \
+                 then Enter",
+                i + 1,
+                square_name(p.start),
+                square_name(p.target)
+            ),
+            None => format!("chessboard: all {total} trials done"),
+        }];
+        if let Some(last) = self.results.last() {
+            let failed = if last.failed { " (off the board: failed)" } else { "" };
+            let error = last.error * 1000.0;
+            lines.push(format!("last trial: error {error:.1} mm in {:.1} s{failed}", last.time));
+        }
+        match (&self.log_error, &self.options.log) {
+            (Some(e), _) => lines.push(format!("LOG NOT WRITTEN: {e}")),
+            (None, Some(path)) => lines.push(format!("logging to {}", path.display())),
+            (None, None) => {}
+        }
+        lines
+    }
+}
+
+/// A square as on a chessboard: files a–h, ranks 1–8.
+fn square_name((file, rank): (usize, usize)) -> String {
+    format!("{}{}", (b'a' + file as u8) as char, rank + 1)
+}
+
+/// Enter ends the trial under way, logs it and sets up the next one.
+pub fn finish_on_enter(
+    keys: Res<ButtonInput<KeyCode>>,
+    task: Option<ResMut<ChessboardTask>>,
+    interaction: Option<NonSend<Interaction>>,
+    mut viewed: ResMut<Viewed>,
+    mut transport: ResMut<Transport>,
+) {
+    let (Some(mut task), Some(interaction)) = (task, interaction) else { return };
+    if !(keys.just_pressed(KeyCode::Enter) || keys.just_pressed(KeyCode::NumpadEnter)) {
+        return;
+    }
+    let Some(trial) = task.finish(interaction.world()) else { return };
+    let n = task.results.len();
+    info!("trial {n}: error {:.1} mm in {:.1} s", trial.error * 1000.0, trial.time);
+    if let Some(e) = &task.log_error {
+        error!("the task's log was not written: {e}");
+    }
+    if task.current().is_some() {
+        viewed.source = task.source();
+        transport.seek = Some(0.0);
+    } else {
+        transport.paused = true;
+    }
+}
+
+/// The board's squares, drawn for each trial's world, the target highlighted.
+#[derive(Resource, Debug, Default)]
+pub struct BoardTiles {
+    serial: Option<u64>,
+    entities: Vec<Entity>,
+}
+
+/// Draws the chessboard just above the ground, the target square in yellow.
+pub fn draw_board(
+    task: Option<Res<ChessboardTask>>,
+    interaction: Option<NonSend<Interaction>>,
+    mut tiles: ResMut<BoardTiles>,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+    mut commands: Commands,
+) {
+    let (Some(task), Some(interaction)) = (task, interaction) else { return };
+    if tiles.serial == Some(interaction.serial()) {
+        return;
+    }
+    tiles.serial = Some(interaction.serial());
+    tiles.entities.drain(..).for_each(|e| commands.entity(e).despawn());
+    let Some((_, placement)) = task.current() else { return };
+    let tile = meshes.add(Plane3d::default().mesh().size(board::SQUARE, board::SQUARE));
+    let mut colour = |c: Color| materials.add(StandardMaterial { base_color: c, ..default() });
+    let (light, dark, target) = (colour(LIGHT), colour(DARK), colour(TARGET));
+    for file in 0..board::SQUARES {
+        for rank in 0..board::SQUARES {
+            let material = match ((file, rank) == placement.target, (file + rank) % 2 == 0) {
+                (true, _) => target.clone(),
+                (false, true) => dark.clone(),
+                (false, false) => light.clone(),
+            };
+            // 1 mm over the ground, so it is drawn over the ground's plane.
+            let at = board::square_center((file, rank)) + glam::Vec3::Y * 0.001;
+            let place = Transform::from_translation(Vec3::new(at.x, at.y, at.z));
+            let entity = commands.spawn((Mesh3d(tile.clone()), MeshMaterial3d(material), place));
+            tiles.entities.push(entity.id());
+        }
+    }
+}
