@@ -29,6 +29,9 @@ use std::path::Path;
 /// camera's view distance.
 const BACKDROP_RADIUS: f32 = 400.0;
 
+/// The largest background side (pixels): wgpu's default texture limit.
+const MAX_SIDE: u32 = 8192;
+
 /// The background image, decoded (8-bit sRGB RGBA).
 #[derive(Resource, Debug, Clone)]
 pub struct Background {
@@ -52,6 +55,10 @@ impl Background {
             .map_err(|e| fail(&e))?
             .to_rgba8();
         let size = UVec2::new(image.width(), image.height());
+        if size.max_element() > MAX_SIDE {
+            let why = format!("{} × {} pixels; at most {MAX_SIDE} a side", size.x, size.y);
+            return Err(fail(&why));
+        }
         Ok(Background { size, rgba: image.into_raw() })
     }
 

@@ -60,12 +60,12 @@ impl std::str::FromStr for HeadPose {
             [x, y, z, yaw_deg, pitch_deg]
                 if parts.iter().all(|p| p.is_finite())
                     && pitch_deg.abs() <= 89.0
-                    && Vec3::new(x, y, z).abs().max_element() <= 1000.0 =>
+                    && Vec3::new(x, y, z).abs().max_element() <= 100.0 =>
             {
                 Ok(HeadPose { position: Vec3::new(x, y, z), yaw_deg, pitch_deg })
             }
             _ => Err(format!(
-                "expected X,Y,Z,YAW_DEG,PITCH_DEG with coordinates within ±1000 m and pitch \
+                "expected X,Y,Z,YAW_DEG,PITCH_DEG with coordinates within ±100 m and pitch \
                  within ±89°, got {s:?}"
             )),
         }
@@ -106,7 +106,7 @@ mod tests {
         // Yaw 90° turns the forward −z to −x; pitch −20° tips it down.
         let (forward, down) = (h.rotation() * Vec3::NEG_Z, 20f32.to_radians());
         assert!((forward - Vec3::new(-down.cos(), -down.sin(), 0.0)).length() < 1e-6);
-        for bad in ["0,1,0", "0,1,0,0,90", "0,1,0,0,NaN", "a,1,0,0,0", "0,1,0,0,0,0", "1e9,0,0,0,0"]
+        for bad in ["0,1,0", "0,1,0,0,90", "0,1,0,0,NaN", "a,1,0,0,0", "0,1,0,0,0,0", "150,0,0,0,0"]
         {
             assert!(bad.parse::<HeadPose>().is_err(), "{bad}");
         }

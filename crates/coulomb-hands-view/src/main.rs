@@ -64,9 +64,10 @@ struct Args {
     /// yellow square with the mouse hand, then Enter; trial after trial.
     #[arg(long, value_name = "chessboard", value_parser = ["chessboard"], conflicts_with = "input")]
     task: Option<String>,
-    /// With --task: trials in the session.
-    #[arg(long, default_value_t = 20, requires = "task")]
-    trials: usize,
+    /// With --task: trials in the session, 1 to 1000.
+    #[arg(long, default_value_t = 20, requires = "task",
+          value_parser = clap::value_parser!(u16).range(1..=1000))]
+    trials: u16,
     /// With --task: the seed of the squares (the same seed, the same trials).
     #[arg(long, default_value_t = 1, requires = "task")]
     seed: u64,
@@ -98,8 +99,12 @@ fn main() -> ExitCode {
     };
     let task = args.task.as_ref().map(|_| {
         let log = args.log.clone();
-        let options =
-            TaskOptions { trials: args.trials, seed: args.seed, log, person: args.person };
+        let options = TaskOptions {
+            trials: usize::from(args.trials),
+            seed: args.seed,
+            log,
+            person: args.person,
+        };
         ChessboardTask::drawn(options, args.method)
     });
     if let Some(e) = task.as_ref().and_then(task_error) {
@@ -108,7 +113,7 @@ fn main() -> ExitCode {
     }
     let loaded = match &task {
         Some(_) if options.for_recording() => Err("--task takes no recording options".into()),
-        Some(task) => Ok(task.source()),
+        Some(task) => task.source().ok_or_else(|| "--task has no trials".into()),
         None => Source::load(args.input.as_deref(), &options),
     };
     let source = match loaded {
@@ -170,11 +175,8 @@ fn main() -> ExitCode {
     }
 }
 
-/// Why a task session cannot start: no trials, or a log that is not an
-/// accuracy JSON (checked before any trial, so none is lost to it).
+/// Why a task session cannot start: a log that is not an accuracy JSON, or
+/// has this person's row already (checked before any trial, so none is lost).
 fn task_error(task: &ChessboardTask) -> Option<String> {
-    if task.current().is_none() {
-        return Some("--trials must be at least 1".into());
-    }
     task.check_log().err()
 }

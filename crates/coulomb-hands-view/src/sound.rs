@@ -74,6 +74,9 @@ pub struct ContactSound {
     history: VecDeque<Vec<Option<HandPose>>>,
     /// The interaction those poses belong to.
     serial: Option<u64>,
+    /// Its step count when last heard: the events are the last step's, so
+    /// a tick with no step (paused, held at a screenshot) has none new.
+    steps: Option<usize>,
 }
 
 /// Contact taps: played when `play` and an audio device is present, worked
@@ -110,6 +113,13 @@ fn listen(
     let world = interaction.world();
     if sound.serial != Some(interaction.serial()) {
         (sound.serial, sound.history) = (Some(interaction.serial()), VecDeque::new());
+    }
+    let steps = interaction.steps();
+    match sound.steps.replace(steps) {
+        Some(last) if last == steps => return,
+        // Steps the viewer took itself (a seek): no speeds across that jump.
+        Some(last) if steps != last + 1 => sound.history.clear(),
+        _ => {}
     }
     let mut waiting = pending.iter().count();
     for e in world.events().iter().filter(|e| e.kind == ContactEventKind::Began) {

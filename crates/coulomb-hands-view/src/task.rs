@@ -52,12 +52,29 @@ pub struct ChessboardTask {
     pub results: Vec<Trial>,
     /// The last log write's failure, shown on the HUD.
     pub log_error: Option<String>,
+    /// The trial's time before the world was last rebuilt (Home, ←), and
+    /// the world seen last: its serial and time (s).
+    carried: f64,
+    seen: Option<(u64, f64)>,
+    /// The next rebuild starts the next trial, rather than restarting this one.
+    next_trial: bool,
 }
 
 impl ChessboardTask {
     /// A session of `placements` under `method`.
     pub fn new(options: TaskOptions, method: Method, placements: Vec<Placement>) -> Self {
-        ChessboardTask { options, method, placements, results: Vec::new(), log_error: None }
+        let (carried, seen, next_trial) = (0.0, None, false);
+        let results = Vec::new();
+        ChessboardTask {
+            options,
+            method,
+            placements,
+            results,
+            log_error: None,
+            carried,
+            seen,
+            next_trial,
+        }
     }
 
     /// A session of `options.trials` trials drawn from `options.seed`.
@@ -72,10 +89,12 @@ impl ChessboardTask {
         self.placements.get(i).map(|p| (i, *p))
     }
 
-    /// The source of the trial under way (the last one's, once all are done).
-    pub fn source(&self) -> Source {
+    /// The source of the trial under way (the last one's, once all are
+    /// done), or `None` for a session of no trials.
+    pub fn source(&self) -> Option<Source> {
         let i = self.results.len().min(self.placements.len().saturating_sub(1));
-        Source::Task { trial: i + 1, placement: self.placements[i] }
+        let placement = *self.placements.get(i)?;
+        Some(Source::Task { trial: i + 1, placement })
     }
 
     /// The row's name: the method's, and the person's.
@@ -88,7 +107,7 @@ impl ChessboardTask {
     /// `None` if no trial is under way or it has only just begun.
     pub fn finish(&mut self, world: &InteractionWorld) -> Option<Trial> {
         let (_, placement) = self.current()?;
-        let time = world.time();
+        let time = self.carried + world.time();
         if time < MIN_TRIAL {
             return None;
         }
@@ -98,8 +117,24 @@ impl ChessboardTask {
         let failed = !board::on_board(cube);
         let trial = Trial { error, time, failed, drops: 0 };
         self.results.push(trial);
+        (self.carried, self.next_trial) = (0.0, true);
         self.log_error = self.write_log().err();
         Some(trial)
+    }
+
+    /// Follows the world of the trial under way: when it is rebuilt from t =
+    /// 0 by a restart or a seek back, the time spent so far is carried, so
+    /// a trial's time is all the time it took.
+    pub fn watch(&mut self, serial: u64, time: f64) {
+        if let Some((last_serial, last_time)) = self.seen
+            && last_serial != serial
+        {
+            match std::mem::take(&mut self.next_trial) {
+                true => self.carried = 0.0,
+                false => self.carried += last_time - time,
+            }
+        }
+        self.seen = Some((serial, time));
     }
 
     /// Whether the log can be written: an existing file must be an accuracy
@@ -108,7 +143,13 @@ impl ChessboardTask {
     pub fn check_log(&self) -> Result<(), String> {
         let Some(path) = &self.options.log else { return Ok(()) };
         if path.exists() {
-            return AccuracyStudy::load(path).map(|_| ()).map_err(|e| e.to_string());
+            let study = AccuracyStudy::load(path).map_err(|e| e.to_string())?;
+            let row = self.row_name();
+            if study.methods.iter().any(|m| m.method == row) {
+                let why = "has a row of that name already; give another --person";
+                return Err(format!("{}: {row:?} {why}", path.display()));
+            }
+            return Ok(());
         }
         match path.parent().filter(|d| !d.as_os_str().is_empty()) {
             Some(dir) if !dir.is_dir() => {
@@ -118,8 +159,9 @@ impl ChessboardTask {
         }
     }
 
-    /// Writes the results so far into the log: this person's row replaced
-    /// or added, every other row kept.
+    /// Writes the results so far into the log: this session's row replaced
+    /// (it was refused at the start if another session had it) or added,
+    /// every other row kept.
     pub fn write_log(&self) -> Result<(), String> {
         let Some(path) = &self.options.log else { return Ok(()) };
         let mut study = match path.exists() {
@@ -138,7 +180,11 @@ impl ChessboardTask {
             None => study.methods.push(row),
         }
         let text = serde_json::to_string_pretty(&study).map_err(|e| e.to_string())?;
-        std::fs::write(path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))
+        // Written aside, then renamed over the log: a crash mid-write loses no row.
+        let aside = path.with_extension("json.writing");
+        let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+        std::fs::write(&aside, text + "\n").map_err(fail)?;
+        std::fs::rename(&aside, path).map_err(fail)
     }
 
     /// The HUD's lines.
@@ -182,6 +228,7 @@ pub fn finish_on_enter(
     mut transport: ResMut<Transport>,
 ) {
     let (Some(mut task), Some(interaction)) = (task, interaction) else { return };
+    task.watch(interaction.serial(), interaction.world().time());
     if !(keys.just_pressed(KeyCode::Enter) || keys.just_pressed(KeyCode::NumpadEnter)) {
         return;
     }
@@ -191,8 +238,8 @@ pub fn finish_on_enter(
     if let Some(e) = &task.log_error {
         error!("the task's log was not written: {e}");
     }
-    if task.current().is_some() {
-        viewed.source = task.source();
+    if let (Some(_), Some(next)) = (task.current(), task.source()) {
+        viewed.source = next;
         transport.seek = Some(0.0);
     } else {
         transport.paused = true;

@@ -32,7 +32,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
     let second = Placement { start: (6, 1), target: (2, 5), yaw: -0.2 };
     let options = TaskOptions { trials: 2, seed: 0, log: Some(log.clone()), person: "ada".into() };
     let session = ChessboardTask::new(options, Method::Coulomb, vec![first, second]);
-    let mut app = app_of(session.source());
+    let mut app = app_of(session.source().expect("a trial"));
     app.insert_resource(session)
         .add_systems(Update, finish_on_enter.after(playback_keys).before(seek));
 
