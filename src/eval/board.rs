@@ -56,6 +56,12 @@ pub fn square_center(square: (usize, usize)) -> Vec3 {
     Vec3::new(at(square.0), 0.0, at(square.1))
 }
 
+/// A placement's error: the horizontal distance from the cube's centre
+/// `cube` to the target square's centre `target` (m).
+pub fn placement_error(cube: Vec3, target: Vec3) -> f32 {
+    ((cube - target) * Vec3::new(1.0, 0.0, 1.0)).length()
+}
+
 /// Whether a point is over the board (m).
 pub fn on_board(p: Vec3) -> bool {
     let half = SQUARES as f32 * SQUARE / 2.0;

@@ -108,7 +108,7 @@ fn trial(method: Method, task: &Task) -> Result<Trial, RunError> {
         driver.run(steps, &mut [&mut eyes])?;
     }
     let state = world.object_state(cube)?;
-    let error = ((state.position - target) * Vec3::new(1.0, 0.0, 1.0)).length();
+    let error = board::placement_error(state.position, target);
     let failed = user.done_at.is_none() || !board::on_board(state.position);
     Ok(Trial { error, time: user.done_at.unwrap_or(TRIAL_LIMIT), failed, drops: user.drops })
 }

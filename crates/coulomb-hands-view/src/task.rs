@@ -113,7 +113,7 @@ impl ChessboardTask {
         }
         let cube = world.object_state(CUBE).ok()?.position;
         let target = board::square_center(placement.target);
-        let error = ((cube - target) * glam::Vec3::new(1.0, 0.0, 1.0)).length();
+        let error = board::placement_error(cube, target);
         let failed = !board::on_board(cube);
         let trial = Trial { error, time, failed, drops: 0 };
         self.results.push(trial);
