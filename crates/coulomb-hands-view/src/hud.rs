@@ -111,7 +111,7 @@ pub fn update_hud(
     (viewed, transport): (Res<Viewed>, Res<Transport>),
     timer: Res<StepTimer>,
     hand: Res<MouseHand>,
-    task: Option<Res<crate::task::ChessboardTask>>,
+    (task, xr): (Option<Res<crate::task::ChessboardTask>>, Res<crate::xr_hands::XrHands>),
     mut text: Query<&mut Text, With<HudText>>,
     mut fill: Query<&mut Node, With<TimelineFill>>,
 ) {
@@ -145,6 +145,9 @@ pub fn update_hud(
         lines.push(
             "      JL IK UO turn  G/H curl/open  1-5 finger (Shift opens)  T thumb".to_string(),
         );
+    }
+    if let Some(line) = xr.hud_line() {
+        lines.push(line);
     }
     if let Some(task) = task {
         lines.extend(task.hud_lines());

@@ -6,7 +6,8 @@
 //! steps once per fixed tick, whatever the frame rate; this crate only
 //! draws it ([`stage`], [`hand_visual`], [`arrows`], [`hud`]), decides
 //! whether a tick steps ([`transport`]), and poses the mouse hand
-//! ([`mouse_hand`]).
+//! ([`mouse_hand`]) or takes an XR runtime's hands ([`xr_hands`], with
+//! the runtime itself in [`openxr`] under the `openxr` feature).
 
 pub mod ar;
 pub mod arrows;
@@ -16,6 +17,8 @@ pub mod hand_visual;
 pub mod head;
 pub mod hud;
 pub mod mouse_hand;
+#[cfg(feature = "openxr")]
+pub mod openxr;
 pub mod ready;
 pub mod shapes;
 pub mod sound;
@@ -23,6 +26,7 @@ pub mod source;
 pub mod stage;
 pub mod task;
 pub mod transport;
+pub mod xr_hands;
 
 use bevy::app::{RunFixedMainLoop, RunFixedMainLoopSystems};
 use bevy::prelude::*;
@@ -56,29 +60,35 @@ pub struct Viewer {
     pub mute: bool,
     /// The chessboard task's session, when the source is its trial.
     pub task: Option<task::ChessboardTask>,
+    /// Where the scene sits in the room, for an XR runtime's hands.
+    pub room: xr_hands::RoomPlacement,
 }
 
 impl Viewer {
     /// The app: a window, the plugin, and the viewer's systems, with the
     /// interaction built and ready at t = 0.
     pub fn app(self) -> Result<App, LoadError> {
-        let (interaction, inlet) = self.source.build(self.method)?;
+        let (interaction, inlets) = self.source.build(self.method)?;
         let head = self.source.head().copied();
+        let live_xr = inlets.xr.is_some();
         let mut transport = Transport::new(self.source.duration(), self.shots, self.exit_after);
         transport.paused = self.paused;
         let mut hand = mouse_hand::MouseHand::default();
-        hand.attach(inlet);
+        hand.attach(inlets.mouse);
+        let mut xr = xr_hands::XrHands::default();
+        xr.attach(inlets.xr);
         let window = Window {
             title: format!("coulomb-hands-view: {}", self.source.name()),
             resolution: (1280u32, 720u32).into(),
             ..default()
         };
+        // Audio is opened by the sound plugin, and only if there is a device.
+        let plugins = DefaultPlugins
+            .set(WindowPlugin { primary_window: Some(window), ..default() })
+            .disable::<bevy::audio::AudioPlugin>();
         let mut app = App::new();
         app.add_plugins((
-            // Audio is opened by the sound plugin, and only if there is a device.
-            DefaultPlugins
-                .set(WindowPlugin { primary_window: Some(window), ..default() })
-                .disable::<bevy::audio::AudioPlugin>(),
+            with_runtime(plugins, live_xr)?,
             CoulombHandsPlugin,
             ViewerPlugin,
             ready::RendererReadyPlugin,
@@ -86,6 +96,8 @@ impl Viewer {
         .insert_non_send(interaction)
         .insert_resource(transport)
         .insert_resource(hand)
+        .insert_resource(xr)
+        .insert_resource(self.room)
         .insert_resource(Viewed { source: self.source, method: self.method });
         app.insert_resource(arrows::ShowSkeleton(self.skeleton));
         let play = !self.mute && sound::audio_device_present();
@@ -102,6 +114,10 @@ impl Viewer {
         if let Some(background) = self.background {
             app.insert_resource(background).add_plugins(ar::ArPlugin);
         }
+        #[cfg(feature = "openxr")]
+        if live_xr {
+            app.add_systems(Startup, openxr::exit_without_session);
+        }
         if let Some(head) = head {
             app.insert_resource(camera::HeadView(head));
         }
@@ -109,6 +125,25 @@ impl Viewer {
         Ok(app)
     }
 }
+
+/// `plugins`, with an XR runtime's session and hand tracking when the
+/// hands are live.
+fn with_runtime(
+    plugins: bevy::app::PluginGroupBuilder,
+    live_xr: bool,
+) -> Result<bevy::app::PluginGroupBuilder, LoadError> {
+    match live_xr {
+        false => Ok(plugins),
+        #[cfg(feature = "openxr")]
+        true => Ok(openxr::with_openxr(plugins)),
+        #[cfg(not(feature = "openxr"))]
+        true => Err(NO_OPENXR.into()),
+    }
+}
+
+/// Why `--openxr` cannot work in a build without the `openxr` feature.
+pub const NO_OPENXR: &str = "--openxr: this viewer was built without OpenXR; build it with \
+     `cargo run -p coulomb-hands-view --release --features openxr -- --openxr`";
 
 /// The viewer's systems (it expects [`Transport`], [`Viewed`] and
 /// [`mouse_hand::MouseHand`] inserted, and the plugin added).
@@ -125,7 +160,7 @@ impl Plugin for ViewerPlugin {
             .init_resource::<hud::StepTimer>()
             .init_resource::<hud::Scrubbing>()
             .init_resource::<task::BoardTiles>()
-            .add_plugins(transport::TransportPlugin)
+            .add_plugins((transport::TransportPlugin, xr_hands::XrHandsPlugin))
             .add_systems(
                 FixedUpdate,
                 (

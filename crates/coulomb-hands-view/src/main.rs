@@ -12,6 +12,7 @@ use coulomb_hands_view::head::{HeadMount, HeadPose, parse_mount};
 use coulomb_hands_view::source::{LoadOptions, Source};
 use coulomb_hands_view::task::{ChessboardTask, TaskOptions};
 use coulomb_hands_view::transport::Shot;
+use coulomb_hands_view::xr_hands::RoomPlacement;
 use coulomb_hands_view::{Viewer, display};
 use std::process::ExitCode;
 
@@ -78,6 +79,14 @@ struct Args {
     /// With --task: the person's name, for the row `METHOD (NAME)`.
     #[arg(long, default_value = "person", requires = "task")]
     person: String,
+    /// Live hands from an OpenXR runtime's hand tracking (a headset, or Monado), in the desk
+    /// scene or INPUT's scene; the view is the headset's. Needs `--features openxr`.
+    #[arg(long, conflicts_with_all = ["task", "stereo", "background", "view", "head_mounted"])]
+    openxr: bool,
+    /// With --openxr: where the scene's origin sits in the room, in metres in the runtime's
+    /// stage space (floor at y = 0; default 0,0.8,-0.35: at a table's height, ahead).
+    #[arg(long, value_name = "X,Y,Z", requires = "openxr")]
+    xr_origin: Option<RoomPlacement>,
     /// No contact sound (it is off anyway when there is no audio device).
     #[arg(long)]
     mute: bool,
@@ -89,6 +98,10 @@ struct Args {
 
 fn main() -> ExitCode {
     let args = Args::parse();
+    if let Err(e) = openxr_built(args.openxr) {
+        eprintln!("error: {e}");
+        return ExitCode::FAILURE;
+    }
     let options = LoadOptions {
         method: args.method,
         scene: args.scene,
@@ -114,6 +127,9 @@ fn main() -> ExitCode {
     let loaded = match &task {
         Some(_) if options.for_recording() => Err("--task takes no recording options".into()),
         Some(task) => task.source().ok_or_else(|| "--task has no trials".into()),
+        None if args.openxr => Source::load(args.input.as_deref(), &options)
+            .and_then(Source::live_xr)
+            .and_then(|source| openxr_runtime().map(|()| source)),
         None => Source::load(args.input.as_deref(), &options),
     };
     let source = match loaded {
@@ -161,6 +177,7 @@ fn main() -> ExitCode {
         background,
         mute: args.mute,
         task,
+        room: args.xr_origin.unwrap_or_default(),
     };
     let mut app = match viewer.app() {
         Ok(app) => app,
@@ -179,4 +196,19 @@ fn main() -> ExitCode {
 /// has this person's row already (checked before any trial, so none is lost).
 fn task_error(task: &ChessboardTask) -> Option<String> {
     task.check_log().err()
+}
+
+/// Why `--openxr` cannot work in this build, if asked for.
+fn openxr_built(asked: bool) -> Result<(), &'static str> {
+    match asked && cfg!(not(feature = "openxr")) {
+        true => Err(coulomb_hands_view::NO_OPENXR),
+        false => Ok(()),
+    }
+}
+
+/// Why there are no live hands: no OpenXR loader, runtime or hand tracking.
+fn openxr_runtime() -> Result<(), coulomb_hands_view::source::LoadError> {
+    #[cfg(feature = "openxr")]
+    coulomb_hands_view::openxr::check_runtime()?;
+    Ok(())
 }

@@ -53,6 +53,14 @@ pub enum Source {
         /// Its squares.
         placement: Placement,
     },
+    /// A scene with both hands from an XR runtime's hand tracking
+    /// ([`crate::xr_hands`]).
+    LiveXr {
+        /// The file's name, for the HUD.
+        name: String,
+        /// What is in it.
+        scene: Scene,
+    },
     /// A scene with one hand driven by mouse and keyboard.
     Scene {
         /// The file's name, for the HUD.
@@ -80,6 +88,15 @@ impl LoadOptions {
     pub fn for_recording(&self) -> bool {
         self.scene.is_some() || self.object_at_grasp.is_some() || self.head.is_some()
     }
+}
+
+/// The hands the app poses itself, by what poses them.
+#[derive(Debug, Clone, Default)]
+pub struct Inlets {
+    /// The mouse-and-keyboard hand's.
+    pub mouse: Option<HandInlet>,
+    /// The XR runtime's left and right hands'.
+    pub xr: Option<[HandInlet; 2]>,
 }
 
 /// Why a recording's options were refused for another input.
@@ -134,7 +151,9 @@ impl Source {
     pub fn name(&self) -> &str {
         match self {
             Source::Scenario(s) => &s.name,
-            Source::Recording { name, .. } | Source::Scene { name, .. } => name,
+            Source::Recording { name, .. }
+            | Source::Scene { name, .. }
+            | Source::LiveXr { name, .. } => name,
             Source::Task { .. } => "chessboard task",
         }
     }
@@ -145,18 +164,27 @@ impl Source {
         match self {
             Source::Scenario(s) => Some(f64::from(s.duration)),
             Source::Recording { playback, .. } => Some(playback.duration),
-            Source::Scene { .. } | Source::Task { .. } => None,
+            Source::Scene { .. } | Source::LiveXr { .. } | Source::Task { .. } => None,
         }
     }
 
-    /// A fresh interaction at t = 0 under `method`, and the inlet of its
-    /// mouse hand if it has one.
-    pub fn build(&self, method: Method) -> Result<(Interaction, Option<HandInlet>), LoadError> {
+    /// The same scene with both hands from an XR runtime: the desk's, or
+    /// a scene's (a scenario or recording has hands of its own).
+    pub fn live_xr(self) -> Result<Source, LoadError> {
+        match self {
+            Source::Scene { name, scene } => Ok(Source::LiveXr { name, scene }),
+            _ => Err(format!("{}: --openxr takes a scene file, or none", self.name()).into()),
+        }
+    }
+
+    /// A fresh interaction at t = 0 under `method`, and the inlets of the
+    /// hands the app poses.
+    pub fn build(&self, method: Method) -> Result<(Interaction, Inlets), LoadError> {
         match self {
             Source::Scenario(s) => {
                 let mut scenario = (**s).clone();
                 scenario.config = method.config(scenario.config);
-                Ok((Interaction::of_scenario(&scenario)?, None))
+                Ok((Interaction::of_scenario(&scenario)?, Inlets::default()))
             }
             Source::Recording { playback, scene, object, .. } => {
                 // The CLI's replay world: a ground at y = 0, then the scene.
@@ -168,7 +196,16 @@ impl Source {
                 if let Some(object) = object {
                     interaction.observe(Closings::new(playback, *object)?);
                 }
-                Ok((interaction, None))
+                Ok((interaction, Inlets::default()))
+            }
+            Source::LiveXr { scene, .. } => {
+                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
+                let xr = [Side::Left, Side::Right].map(|side| {
+                    let (hand, inlet) = PushedHand::new(side);
+                    interaction.add_hand(hand);
+                    inlet
+                });
+                Ok((interaction, Inlets { mouse: None, xr: Some(xr) }))
             }
             Source::Scene { scene, .. } => {
                 Ok(with_mouse_hand(Interaction::new(world(Some(scene), method, false)?)))
@@ -183,10 +220,10 @@ impl Source {
 }
 
 /// `interaction` with a right hand the mouse drives, and its inlet.
-fn with_mouse_hand(mut interaction: Interaction) -> (Interaction, Option<HandInlet>) {
+fn with_mouse_hand(mut interaction: Interaction) -> (Interaction, Inlets) {
     let (hand, inlet) = PushedHand::new(Side::Right);
     interaction.add_hand(hand);
-    (interaction, Some(inlet))
+    (interaction, Inlets { mouse: Some(inlet), xr: None })
 }
 
 /// A world under `method` with `scene` in it, on the replays' ground at

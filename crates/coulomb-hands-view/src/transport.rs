@@ -201,6 +201,7 @@ pub fn seek(
     viewed: Res<Viewed>,
     interaction: Option<NonSendMut<Interaction>>,
     mut inlet: ResMut<crate::mouse_hand::MouseHand>,
+    xr: Option<ResMut<crate::xr_hands::XrHands>>,
 ) {
     let (Some(target), Some(mut interaction)) = (transport.seek.take(), interaction) else {
         return;
@@ -212,9 +213,12 @@ pub fn seek(
     let dt = f64::from(interaction.world().config().dt);
     if target < interaction.world().time() - dt / 2.0 {
         match viewed.source.build(viewed.method) {
-            Ok((fresh, hand)) => {
+            Ok((fresh, inlets)) => {
                 *interaction = fresh;
-                inlet.attach(hand);
+                inlet.attach(inlets.mouse);
+                if let Some(mut xr) = xr {
+                    xr.attach(inlets.xr);
+                }
             }
             Err(e) => {
                 error!("could not restart: {e}");

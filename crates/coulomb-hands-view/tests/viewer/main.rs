@@ -9,3 +9,4 @@ mod mouse_hand;
 mod task;
 mod transport;
 mod window;
+mod xr_hands;

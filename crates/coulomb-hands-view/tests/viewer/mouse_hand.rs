@@ -33,10 +33,10 @@ fn desk() -> App {
 /// An app of `source` with the mouse hand, the transport and the taps, at
 /// 100 frames per second.
 pub fn app_of(source: Source) -> App {
-    let (interaction, inlet) = source.build(Method::Coulomb).expect("a world");
-    assert!(inlet.is_some(), "a scene has a mouse hand");
+    let (interaction, inlets) = source.build(Method::Coulomb).expect("a world");
+    assert!(inlets.mouse.is_some(), "a scene has a mouse hand");
     let mut hand = MouseHand::default();
-    hand.attach(inlet);
+    hand.attach(inlets.mouse);
     let mut app = App::new();
     // Silent, as with no audio device: the taps are worked out, not played.
     let sound = SoundPlugin { play: false };
