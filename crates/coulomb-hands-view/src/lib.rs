@@ -7,7 +7,7 @@
 //! draws it ([`stage`], [`hand_visual`], [`arrows`], [`hud`]), decides
 //! whether a tick steps ([`transport`]), and poses the mouse hand
 //! ([`mouse_hand`]) or takes an XR runtime's hands ([`xr_hands`], with
-//! the runtime itself in [`openxr`] under the `openxr` feature).
+//! the runtime itself in `openxr` under the `openxr` feature).
 
 pub mod ar;
 pub mod arrows;

@@ -2,7 +2,7 @@
 //!
 //! Each frame, bevy_mod_xr's hand trackers hold the 26 joints the runtime
 //! located (bevy_mod_openxr fills them, with the `openxr` feature: see
-//! [`crate::openxr`]). Here they become a tracked hand by the core's
+//! `crate::openxr`). Here they become a tracked hand by the core's
 //! OpenXR layout ([`layouts::from_openxr`]), then the skeletal hand
 //! ([`hand_pose`]), pushed to a [`coulomb_hands_bevy::sources::PushedHand`]
 //! of the interaction. The hand then touches objects only through the
