@@ -3,12 +3,18 @@
 
 use super::{InputError, TrackingFrame, leap};
 use serde_json::Value;
+use std::io::ErrorKind;
 use std::net::TcpStream;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
 use tungstenite::stream::MaybeTlsStream;
 use tungstenite::{Message, WebSocket};
 
 /// Where the Leap Motion service listens by default.
 pub const DEFAULT_URL: &str = "ws://127.0.0.1:6437/v6.json";
+
+/// How often a reader stopped by a flag looks at it while no message comes.
+pub const STOP_POLL: Duration = Duration::from_millis(100);
 
 /// A live connection to a Leap Motion service.
 pub struct LiveLeap {
@@ -40,20 +46,52 @@ impl LiveLeap {
     /// service's version greeting, events) are passed over; malformed
     /// frames are skipped and counted. `Ok(None)` when the stream closes.
     pub fn next_frame(&mut self) -> Result<Option<TrackingFrame>, InputError> {
+        self.read_frame(None)
+    }
+
+    /// [`Self::next_frame`], but `Ok(None)` too once `stop` is set: a reader
+    /// on a thread of its own looks at it at least every [`STOP_POLL`], so
+    /// the thread can end while the service sends nothing.
+    pub fn next_frame_unless(
+        &mut self,
+        stop: &AtomicBool,
+    ) -> Result<Option<TrackingFrame>, InputError> {
+        if let MaybeTlsStream::Plain(tcp) = self.socket.get_ref() {
+            tcp.set_read_timeout(Some(STOP_POLL)).map_err(|e| self.fail(e.to_string()))?;
+        }
+        self.read_frame(Some(stop))
+    }
+
+    fn fail(&self, reason: String) -> InputError {
+        InputError {
+            source_name: self.url.clone(),
+            frame: Some(self.frames + self.skipped),
+            field: "connection".into(),
+            reason,
+        }
+    }
+
+    fn read_frame(
+        &mut self,
+        stop: Option<&AtomicBool>,
+    ) -> Result<Option<TrackingFrame>, InputError> {
         loop {
+            if stop.is_some_and(|stop| stop.load(Ordering::Relaxed)) {
+                return Ok(None);
+            }
             let message = match self.socket.read() {
                 Ok(m) => m,
                 Err(tungstenite::Error::ConnectionClosed | tungstenite::Error::AlreadyClosed) => {
                     return Ok(None);
                 }
-                Err(e) => {
-                    return Err(InputError {
-                        source_name: self.url.clone(),
-                        frame: Some(self.frames + self.skipped),
-                        field: "connection".into(),
-                        reason: e.to_string(),
-                    });
+                // The read timeout of `next_frame_unless`: nothing yet.
+                Err(tungstenite::Error::Io(e))
+                    if stop.is_some()
+                        && matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) =>
+                {
+                    continue;
                 }
+                Err(e) => return Err(self.fail(e.to_string())),
             };
             let text = match message {
                 Message::Text(t) => t,

@@ -12,40 +12,57 @@ use glam::Vec3;
 use std::net::TcpListener;
 use tungstenite::Message;
 
-fn pinch_path() -> std::path::PathBuf {
+pub(crate) fn pinch_path() -> std::path::PathBuf {
     std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/leap/pinch.json.lz")
 }
 
 /// The recording's frames as the service sends them (JSON objects).
-fn pinch_frames() -> Vec<serde_json::Value> {
+pub(crate) fn pinch_frames() -> Vec<serde_json::Value> {
     let text = std::fs::read_to_string(pinch_path()).unwrap();
     let json = String::from_utf16(&lz_str::decompress_from_base64(text.trim()).unwrap()).unwrap();
     let root: serde_json::Value = serde_json::from_str(&json).unwrap();
     root["frames"].as_array().unwrap().clone()
 }
 
-/// Serves `messages` to the first client on a loopback WebSocket after the
-/// service's greeting, then closes; returns the URL.
-fn serve(messages: Vec<String>) -> (String, std::thread::JoinHandle<()>) {
+/// The service's side of a loopback connection.
+pub(crate) type Socket = tungstenite::WebSocket<std::net::TcpStream>;
+
+/// A loopback Leap service: greets its first client as the service does,
+/// then runs `then` on the connection. Returns the URL.
+pub(crate) fn service(
+    then: impl FnOnce(&mut Socket) + Send + 'static,
+) -> (String, std::thread::JoinHandle<()>) {
     let listener = TcpListener::bind("127.0.0.1:0").unwrap();
     let url = format!("ws://{}/v6.json", listener.local_addr().unwrap());
     let server = std::thread::spawn(move || {
         let (stream, _) = listener.accept().unwrap();
         let mut ws = tungstenite::accept(stream).unwrap();
         ws.send(Message::text(r#"{"serviceVersion":"2.3.1","version":6}"#)).unwrap();
-        for m in messages {
-            ws.send(Message::text(m)).unwrap();
-        }
-        ws.close(None).unwrap();
-        // Drain until the client acknowledges the close.
-        while ws.read().is_ok() {}
+        then(&mut ws);
     });
     (url, server)
 }
 
+/// Closes the stream, draining until the client acknowledges the close.
+pub(crate) fn close(ws: &mut Socket) {
+    ws.close(None).unwrap();
+    while ws.read().is_ok() {}
+}
+
+/// Serves `messages` to the first client on a loopback WebSocket after the
+/// service's greeting, then closes; returns the URL.
+fn serve(messages: Vec<String>) -> (String, std::thread::JoinHandle<()>) {
+    service(move |ws| {
+        for m in messages {
+            ws.send(Message::text(m)).unwrap();
+        }
+        close(ws);
+    })
+}
+
 /// Runs `client` on its own thread, so a hang fails the test instead of
 /// stalling the suite.
-fn within_a_minute<T: Send + 'static>(client: impl FnOnce() -> T + Send + 'static) -> T {
+pub(crate) fn within_a_minute<T: Send + 'static>(client: impl FnOnce() -> T + Send + 'static) -> T {
     let (done, result) = std::sync::mpsc::channel();
     std::thread::spawn(move || done.send(client()).ok());
     result.recv_timeout(std::time::Duration::from_secs(60)).expect("finished within 60 s")

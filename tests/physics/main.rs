@@ -11,6 +11,7 @@ mod glitch;
 mod grasp;
 mod lifecycle;
 mod live;
+mod live_feed;
 mod meshes;
 mod pinch;
 mod push;

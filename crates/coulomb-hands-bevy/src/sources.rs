@@ -1,8 +1,14 @@
 //! Hand sources for an app. Any core [`HandSource`] drives a hand of an
 //! [`crate::interaction::Interaction`]: a scenario's scripted or recorded
 //! hand ([`coulomb_hands::run::scenario::ScenarioHand`]), a recording's
-//! track, the live Leap client ([`coulomb_hands::run::live::LiveHand`]),
-//! a function of time ([`coulomb_hands::run::drive::PoseFn`]).
+//! track, a function of time ([`coulomb_hands::run::drive::PoseFn`]).
+//!
+//! The live Leap client's hands come from a
+//! [`coulomb_hands::run::live::LiveFeed`]: it reads the service on a thread
+//! of its own, so a frame never waits for the network, and plays the hands
+//! a little behind the newest frame on the app's clock. (Its sibling
+//! `LiveHand` reads the stream when the physics needs a frame, and so
+//! blocks: it is for headless runs that step through a stream.)
 //!
 //! A hand whose poses come from the app's own systems (an XR runtime's hand
 //! joints, a hand driven by mouse and keyboard) is a [`PushedHand`]: the

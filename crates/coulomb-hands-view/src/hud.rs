@@ -149,6 +149,9 @@ pub fn update_hud(
     if let Some(line) = xr.hud_line() {
         lines.push(line);
     }
+    if let Some(feed) = viewed.source.leap_feed() {
+        lines.push(leap_line(&feed.stats()));
+    }
     if let Some(task) = task {
         lines.extend(task.hud_lines());
     }
@@ -160,6 +163,20 @@ pub fn update_hud(
             node.width = Val::Percent((t / end * 100.0).clamp(0.0, 100.0) as f32);
         }
     }
+}
+
+/// What the live Leap stream has sent, and whether it still runs.
+pub fn leap_line(stats: &coulomb_hands::run::live::LiveStats) -> String {
+    let state = match (&stats.error, stats.closed, stats.newest) {
+        (Some(e), ..) => format!("FAILED: {e}"),
+        (None, true, _) => "closed".to_string(),
+        (None, false, None) => "waiting for the first frame".to_string(),
+        (None, false, Some(t)) => format!("newest frame at {t:.2} s"),
+    };
+    format!(
+        "Leap: {} frames, {} hands seen, {} skipped, {} dropped | {state}",
+        stats.frames, stats.hands_seen, stats.skipped, stats.dropped
+    )
 }
 
 /// A left press on the timeline seeks there, and dragging scrubs.

@@ -1,11 +1,12 @@
 //! `coulomb-hands-view [SCENARIO|RECORDING|SCENE]`: opens a window onto an
 //! interaction. With no argument, a desk scene and a hand driven by mouse
-//! and keyboard.
+//! and keyboard; `--leap` or `--openxr` take live hands instead.
 
 use clap::Parser;
 use coulomb_hands::input::convert::MountPreset;
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::run::replay::GraspObject;
+use coulomb_hands_bevy::convert::to_core_vec3;
 use coulomb_hands_view::ar::Background;
 use coulomb_hands_view::camera::{StartView, Stereo};
 use coulomb_hands_view::head::{HeadMount, HeadPose, parse_mount};
@@ -87,6 +88,17 @@ struct Args {
     /// stage space (floor at y = 0; default 0,0.8,-0.35: at a table's height, ahead).
     #[arg(long, value_name = "X,Y,Z", requires = "openxr")]
     xr_origin: Option<RoomPlacement>,
+    /// Live hands from a Leap Motion service's WebSocket stream (default URL
+    /// ws://127.0.0.1:6437/v6.json), in the desk scene or INPUT's scene.
+    #[arg(long, value_name = "URL", num_args = 0..=1,
+          default_missing_value = coulomb_hands::input::live::DEFAULT_URL,
+          conflicts_with_all = ["task", "openxr", "head_mounted"])]
+    leap: Option<String>,
+    /// With --leap: where the desktop device sits in the scene, X,Y,Z in metres (default
+    /// 0,-0.2,0: 20 cm under the origin, so a hand at the device's usual 20–30 cm reaches the
+    /// table).
+    #[arg(long, value_name = "X,Y,Z", requires = "leap")]
+    leap_device: Option<RoomPlacement>,
     /// No contact sound (it is off anyway when there is no audio device).
     #[arg(long)]
     mute: bool,
@@ -130,6 +142,12 @@ fn main() -> ExitCode {
         None if args.openxr => Source::load(args.input.as_deref(), &options)
             .and_then(Source::live_xr)
             .and_then(|source| openxr_runtime().map(|()| source)),
+        None if args.leap.is_some() => {
+            let url = args.leap.as_deref().unwrap_or_default();
+            let device = args.leap_device.map_or(LEAP_DEVICE, |d| to_core_vec3(d.origin));
+            Source::load(args.input.as_deref(), &options)
+                .and_then(|source| source.live_leap(url, device))
+        }
         None => Source::load(args.input.as_deref(), &options),
     };
     let source = match loaded {
@@ -191,6 +209,9 @@ fn main() -> ExitCode {
         bevy::app::AppExit::Error(_) => ExitCode::FAILURE,
     }
 }
+
+/// Where a live Leap device sits in the scene by default (m).
+const LEAP_DEVICE: glam::Vec3 = glam::Vec3::new(0.0, -0.2, 0.0);
 
 /// Why a task session cannot start: a log that is not an accuracy JSON, or
 /// has this person's row already (checked before any trial, so none is lost).

@@ -1,5 +1,6 @@
 //! What the viewer shows: a shipped or filed scenario, a tracking recording,
-//! or a scene driven by the mouse-and-keyboard hand. Each is loaded and
+//! or a scene driven by the mouse-and-keyboard hand, an XR runtime's hands
+//! or a Leap Motion service's. Each is loaded and
 //! checked once, by the core's own loaders (so a bad file is the same error
 //! as in the CLI), and can build a fresh [`Interaction`] from the start any
 //! number of times: a timeline scrub back in time replays from t = 0, which
@@ -8,9 +9,11 @@
 use crate::head::HeadMount;
 use coulomb_hands::eval::board::{self, Placement};
 use coulomb_hands::hand::Side;
+use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld, Method};
 use coulomb_hands::run::closing::Closings;
+use coulomb_hands::run::live::LiveFeed;
 use coulomb_hands::run::replay::{GraspObject, replay_world};
 use coulomb_hands::run::scenario::{Scenario, ScenarioHand};
 use coulomb_hands::scene::Scene;
@@ -60,6 +63,16 @@ pub enum Source {
         name: String,
         /// What is in it.
         scene: Scene,
+    },
+    /// A scene with both hands from a Leap Motion service's stream, read
+    /// on a thread of its own so that no frame waits for the network.
+    LiveLeap {
+        /// The file's name, for the HUD.
+        name: String,
+        /// What is in it.
+        scene: Scene,
+        /// The stream, and what it has sent.
+        feed: LiveFeed,
     },
     /// A scene with one hand driven by mouse and keyboard.
     Scene {
@@ -153,7 +166,8 @@ impl Source {
             Source::Scenario(s) => &s.name,
             Source::Recording { name, .. }
             | Source::Scene { name, .. }
-            | Source::LiveXr { name, .. } => name,
+            | Source::LiveXr { name, .. }
+            | Source::LiveLeap { name, .. } => name,
             Source::Task { .. } => "chessboard task",
         }
     }
@@ -164,7 +178,10 @@ impl Source {
         match self {
             Source::Scenario(s) => Some(f64::from(s.duration)),
             Source::Recording { playback, .. } => Some(playback.duration),
-            Source::Scene { .. } | Source::LiveXr { .. } | Source::Task { .. } => None,
+            Source::Scene { .. }
+            | Source::LiveXr { .. }
+            | Source::LiveLeap { .. }
+            | Source::Task { .. } => None,
         }
     }
 
@@ -174,6 +191,28 @@ impl Source {
         match self {
             Source::Scene { name, scene } => Ok(Source::LiveXr { name, scene }),
             _ => Err(format!("{}: --openxr takes a scene file, or none", self.name()).into()),
+        }
+    }
+
+    /// The same scene with both hands from the Leap Motion service at
+    /// `url`, a desktop device at `device` in the scene (m). Connects now,
+    /// so a service that is not there is an error before any window.
+    pub fn live_leap(self, url: &str, device: glam::Vec3) -> Result<Source, LoadError> {
+        match self {
+            Source::Scene { name, scene } => {
+                let conversion = Conversion::leap_desktop(device);
+                let feed = LiveFeed::connect(url, conversion, DEFAULT_GRACE)?;
+                Ok(Source::LiveLeap { name, scene, feed })
+            }
+            _ => Err(format!("{}: --leap takes a scene file, or none", self.name()).into()),
+        }
+    }
+
+    /// The live Leap stream, when the hands are its.
+    pub fn leap_feed(&self) -> Option<&LiveFeed> {
+        match self {
+            Source::LiveLeap { feed, .. } => Some(feed),
+            _ => None,
         }
     }
 
@@ -206,6 +245,15 @@ impl Source {
                     inlet
                 });
                 Ok((interaction, Inlets { mouse: None, xr: Some(xr) }))
+            }
+            Source::LiveLeap { scene, feed, .. } => {
+                // Each build's hands tie their clock to the stream afresh:
+                // a restart plays on from the newest frames.
+                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
+                for side in [Side::Left, Side::Right] {
+                    interaction.add_hand(feed.hand(side));
+                }
+                Ok((interaction, Inlets::default()))
             }
             Source::Scene { scene, .. } => {
                 Ok(with_mouse_hand(Interaction::new(world(Some(scene), method, false)?)))

@@ -5,6 +5,7 @@ mod ar;
 mod hand_visual;
 mod head;
 mod keys;
+mod leap;
 mod mouse_hand;
 mod task;
 mod transport;
