@@ -46,18 +46,26 @@ impl LiveLeap {
     /// service's version greeting, events) are passed over; malformed
     /// frames are skipped and counted. `Ok(None)` when the stream closes.
     pub fn next_frame(&mut self) -> Result<Option<TrackingFrame>, InputError> {
+        if let MaybeTlsStream::Plain(tcp) = self.socket.get_ref() {
+            tcp.set_read_timeout(None).map_err(|e| self.fail(e.to_string()))?;
+        }
         self.read_frame(None)
     }
 
-    /// [`Self::next_frame`], but `Ok(None)` too once `stop` is set: a reader
-    /// on a thread of its own looks at it at least every [`STOP_POLL`], so
-    /// the thread can end while the service sends nothing.
+    /// [`Self::next_frame`], but `Ok(None)` too once `stop` is set: while no
+    /// message comes, a reader on a thread of its own looks at it every
+    /// [`STOP_POLL`], so the thread can end while the service sends
+    /// nothing. Only a plain `ws://` stream can be waited on so; any other
+    /// is an error rather than a wait that could not be stopped.
     pub fn next_frame_unless(
         &mut self,
         stop: &AtomicBool,
     ) -> Result<Option<TrackingFrame>, InputError> {
-        if let MaybeTlsStream::Plain(tcp) = self.socket.get_ref() {
-            tcp.set_read_timeout(Some(STOP_POLL)).map_err(|e| self.fail(e.to_string()))?;
+        match self.socket.get_ref() {
+            MaybeTlsStream::Plain(tcp) => {
+                tcp.set_read_timeout(Some(STOP_POLL)).map_err(|e| self.fail(e.to_string()))?
+            }
+            _ => return Err(self.fail("only a plain ws:// stream can be read on a thread".into())),
         }
         self.read_frame(Some(stop))
     }

@@ -6,7 +6,8 @@
 //! The live Leap client's hands come from a
 //! [`coulomb_hands::run::live::LiveFeed`]: it reads the service on a thread
 //! of its own, so a frame never waits for the network, and plays the hands
-//! a little behind the newest frame on the app's clock. (Its sibling
+//! a little behind the newest frame on the app's clock (`hands()` gives
+//! both on one tie, for two-handed grasps). (Its sibling
 //! `LiveHand` reads the stream when the physics needs a frame, and so
 //! blocks: it is for headless runs that step through a stream.)
 //!

@@ -247,11 +247,12 @@ impl Source {
                 Ok((interaction, Inlets { mouse: None, xr: Some(xr) }))
             }
             Source::LiveLeap { scene, feed, .. } => {
-                // Each build's hands tie their clock to the stream afresh:
-                // a restart plays on from the newest frames.
+                // Each build's hands tie their clock to the stream afresh
+                // (both on one tie): a restart plays on from the newest
+                // frames.
                 let mut interaction = Interaction::new(world(Some(scene), method, false)?);
-                for side in [Side::Left, Side::Right] {
-                    interaction.add_hand(feed.hand(side));
+                for hand in feed.hands() {
+                    interaction.add_hand(hand);
                 }
                 Ok((interaction, Inlets::default()))
             }

@@ -95,15 +95,8 @@ impl LiveFeed {
     /// bridged.
     pub fn connect(url: &str, conversion: Conversion, grace: f64) -> Result<LiveFeed, InputError> {
         let stream = LiveLeap::connect(url)?;
-        let shared = Arc::new(Mutex::new(Shared {
-            tracks: Tracks::new(conversion),
-            frames: 0,
-            skipped: 0,
-            closed: false,
-            error: None,
-        }));
-        let stop = Arc::new(AtomicBool::new(false));
-        let reader = (Arc::clone(&shared), Arc::clone(&stop));
+        let feed = LiveFeed::unread(conversion, grace);
+        let reader = (Arc::clone(&feed.shared), Arc::clone(&feed._stop.0));
         std::thread::Builder::new()
             .name("coulomb-hands live feed".into())
             .spawn(move || read(stream, &reader.0, &reader.1))
@@ -113,17 +106,38 @@ impl LiveFeed {
                 field: "reader thread".into(),
                 reason: e.to_string(),
             })?;
-        Ok(LiveFeed { shared, _stop: Arc::new(StopOnDrop(stop)), grace })
+        Ok(feed)
     }
 
-    /// The `side` hand, tied to the clock of whoever samples it first.
+    /// A feed that nothing has read into yet.
+    fn unread(conversion: Conversion, grace: f64) -> LiveFeed {
+        let shared = Shared {
+            tracks: Tracks::new(conversion),
+            frames: 0,
+            skipped: 0,
+            closed: false,
+            error: None,
+        };
+        let stop = StopOnDrop(Arc::new(AtomicBool::new(false)));
+        LiveFeed { shared: Arc::new(Mutex::new(shared)), _stop: Arc::new(stop), grace }
+    }
+
+    /// The `side` hand alone, tied to the clock of whoever samples it
+    /// first.
     pub fn hand(&self, side: Side) -> LiveFeedHand {
-        LiveFeedHand {
-            feed: self.clone(),
-            side,
-            playout: Playout::default(),
-            played: f64::NEG_INFINITY,
-        }
+        self.hand_tied(side, Arc::default())
+    }
+
+    /// Both hands (left, right) on one tie to the host's clock, so that a
+    /// frame arriving between their samples cannot set them a frame apart:
+    /// what a two-handed grasp needs.
+    pub fn hands(&self) -> [LiveFeedHand; 2] {
+        let playout = Arc::default();
+        [Side::Left, Side::Right].map(|side| self.hand_tied(side, Arc::clone(&playout)))
+    }
+
+    fn hand_tied(&self, side: Side, playout: Arc<Mutex<Playout>>) -> LiveFeedHand {
+        LiveFeedHand { feed: self.clone(), side, playout }
     }
 
     /// What has been received so far.
@@ -180,18 +194,27 @@ fn read(mut stream: LiveLeap, shared: &Mutex<Shared>, stop: &AtomicBool) {
 pub struct LiveFeedHand {
     feed: LiveFeed,
     side: Side,
-    playout: Playout,
-    /// The stream time last played (s).
-    played: f64,
+    /// The tie to the host's clock, shared by the hands of one
+    /// [`LiveFeed::hands`].
+    playout: Arc<Mutex<Playout>>,
 }
 
 /// The tie between the host's clock and the stream's.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 struct Playout {
     /// Stream time minus host time (s), once tied.
     offset: Option<f64>,
     /// The newest frame's time at the last call (s); 0 before any.
     newest_seen: f64,
+    /// The stream time last played (s), never past the newest frame; −∞
+    /// before any.
+    played: f64,
+}
+
+impl Default for Playout {
+    fn default() -> Self {
+        Playout { offset: None, newest_seen: 0.0, played: f64::NEG_INFINITY }
+    }
 }
 
 impl Playout {
@@ -204,15 +227,44 @@ impl Playout {
         if let Some(offset) = self.offset {
             let s = t + offset;
             // Behind: the host paused, or the stream jumped ahead. Ahead
-            // although a frame just came: the host's clock runs faster.
+            // although a frame just came: the host's clock ran faster, or
+            // a stall ended.
             let behind = s < target - RESYNC;
             let ahead = arrived && s > newest + PLAYOUT_DELAY;
             if !behind && !ahead {
                 return s;
             }
         }
-        self.offset = Some(target - t);
-        target
+        // Never back before what was played: the samples before it are
+        // forgotten, and a hand played backwards would move against its
+        // own motion.
+        let tie = target.max(self.played);
+        self.offset = Some(tie - t);
+        tie
+    }
+
+    /// The `side` hand of `tracks` at host time `t` (s), forgetting the
+    /// samples no later call can need. Past the newest frame (the stream
+    /// is late), that frame is held for `grace` (s), as a gap between
+    /// frames is bridged.
+    fn sample(
+        &mut self,
+        tracks: &mut Tracks,
+        side: Side,
+        t: f64,
+        grace: f64,
+    ) -> Option<HandSample> {
+        let newest = tracks.newest;
+        if !newest.is_finite() {
+            return None;
+        }
+        let s = self.at(t, newest);
+        self.played = s.min(newest);
+        if s - newest > grace {
+            return None;
+        }
+        tracks.forget_before(side, self.played);
+        interpolate(&tracks.samples[side as usize], self.played, grace)
     }
 }
 
@@ -222,41 +274,27 @@ impl HandSource for LiveFeedHand {
     }
 
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
-        let grace = self.feed.grace;
         let mut shared = self.feed.lock();
         if let Some(e) = &shared.error {
             return Err(e.clone().into());
         }
-        let newest = shared.tracks.newest;
-        if !newest.is_finite() {
-            return Ok(None);
-        }
-        let s = self.playout.at(t, newest);
-        self.played = s;
-        // Past the newest frame (the stream is late): hold it for the
-        // grace period, as a gap between frames is bridged.
-        let at = if s > newest {
-            if s - newest > grace {
-                return Ok(None);
-            }
-            newest
-        } else {
-            s
-        };
-        shared.tracks.forget_before(self.side, at);
-        Ok(interpolate(&shared.tracks.samples[self.side as usize], at, grace))
+        let mut playout = self.playout.lock().unwrap_or_else(PoisonError::into_inner);
+        Ok(playout.sample(&mut shared.tracks, self.side, t, self.feed.grace))
     }
 
     /// The stream has closed and every frame has been played.
     fn finished(&self) -> bool {
         let shared = self.feed.lock();
-        shared.closed && shared.error.is_none() && self.played >= shared.tracks.newest
+        let played = self.playout.lock().unwrap_or_else(PoisonError::into_inner).played;
+        shared.closed && shared.error.is_none() && played >= shared.tracks.newest
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::input::{TrackedHand, TrackingFrame};
+    use glam::Vec3;
 
     /// Plays `playout` at host times `t0 + k·dt` while frames come at
     /// `newest(k)`; returns the stream times played.
@@ -305,5 +343,69 @@ mod tests {
         // 0.2 s ahead: tied again to the new frame.
         let s = playout.at(0.3, 2.1);
         assert!((s - (2.1 - PLAYOUT_DELAY)).abs() < 1e-12, "{s}");
+    }
+
+    /// The first right hand of the bundled pinch recording.
+    fn right_hand() -> TrackedHand {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/leap/pinch.json.lz");
+        let recording = crate::input::leap::load(&path).unwrap();
+        let mut hands = recording.frames.into_iter().flat_map(|f| f.hands);
+        hands.find(|h| h.side == Side::Right).unwrap()
+    }
+
+    /// Frame `k` of a 120 Hz stream of `hand`.
+    fn frame(hand: &TrackedHand, k: i64) -> TrackingFrame {
+        TrackingFrame { timestamp_us: k * 8_333, hands: vec![hand.clone()] }
+    }
+
+    #[test]
+    fn a_hand_held_through_a_stall_stays_tracked_when_the_backlog_comes() {
+        // The host samples at 1 kHz from 7.3 s. The service goes quiet from
+        // 150 ms to 240 ms (less than the 0.1 s grace), then sends its
+        // backlog a frame per millisecond until it is on time again.
+        let hand = right_hand();
+        let mut tracks = Tracks::new(Conversion::leap_desktop(Vec3::ZERO));
+        let mut playout = Playout::default();
+        let (mut sent, mut last) = (0, f64::NEG_INFINITY);
+        for ms in 0..400 {
+            let due = (ms as f64 / 8.333) as i64 + 1; // frames stamped by now
+            let quiet = (150..240).contains(&ms);
+            while !quiet && sent < due {
+                tracks.take(frame(&hand, sent));
+                sent += 1;
+                if ms >= 240 {
+                    break; // the backlog: a frame per millisecond
+                }
+            }
+            let sample = playout.sample(&mut tracks, Side::Right, 7.3 + ms as f64 * 1e-3, 0.1);
+            // Tracked once the first frame lies a play-out delay behind.
+            if ms as f64 * 1e-3 > PLAYOUT_DELAY {
+                assert!(sample.is_some(), "lost at {ms} ms (played {})", playout.played);
+            }
+            assert!(playout.played >= last, "played backwards at {ms} ms");
+            last = playout.played;
+        }
+        assert_eq!(sent, 48, "the backlog was sent");
+    }
+
+    #[test]
+    fn the_hands_of_one_feed_share_one_tie_to_the_clock() {
+        let hand = right_hand();
+        let feed = LiveFeed::unread(Conversion::leap_desktop(Vec3::ZERO), 0.1);
+        let take = |k: i64| feed.lock().tracks.take(frame(&hand, k));
+        let played = |hand: &LiveFeedHand| hand.playout.lock().unwrap().played;
+        (0..6).for_each(take);
+        // A frame arrives between the left hand's sample and the right's.
+        let [mut left, mut right] = feed.hands();
+        left.sample(4.2).unwrap();
+        take(6);
+        assert!(right.sample(4.2).unwrap().is_some());
+        assert_eq!(played(&left), played(&right));
+        // Hands taken one by one are tied a frame apart.
+        let (mut left, mut right) = (feed.hand(Side::Left), feed.hand(Side::Right));
+        left.sample(9.1).unwrap();
+        take(7);
+        right.sample(9.1).unwrap();
+        assert!((played(&right) - played(&left) - 8.333e-3).abs() < 1e-9);
     }
 }

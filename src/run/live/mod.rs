@@ -113,8 +113,8 @@ pub struct LiveSummary {
     pub frames: usize,
     /// Messages skipped as malformed.
     pub skipped: usize,
-    /// Frames or hands left out (time going backwards, unusable poses, a
-    /// second hand of a side at one time).
+    /// Frames or hands left out (stale frames, a jump ahead the next frame
+    /// refuted, unusable poses, a second hand of a side at one time).
     pub dropped: usize,
     /// Distinct tracker hand ids seen.
     pub hands_seen: usize,
