@@ -137,7 +137,11 @@ pub fn update_hud(
             world.config().dt * 1000.0,
             bones.len()
         ),
-        "Space pause  . step  [ ] speed  <- -> 1 s  Home restart  Tab skeleton".to_string(),
+        if transport.live {
+            "live hands at 1x | Space pause  . step  Home restart  Tab skeleton".to_string()
+        } else {
+            "Space pause  . step  [ ] speed  <- -> 1 s  Home restart  Tab skeleton".to_string()
+        },
         "drag orbit  wheel zoom  middle-drag pan".to_string(),
     ];
     if hand.active() {

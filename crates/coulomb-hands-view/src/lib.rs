@@ -73,6 +73,7 @@ impl Viewer {
         let live_xr = inlets.xr.is_some();
         let mut transport = Transport::new(self.source.duration(), self.shots, self.exit_after);
         transport.paused = self.paused;
+        transport.live = self.source.is_live();
         let mut hand = mouse_hand::MouseHand::default();
         hand.attach(inlets.mouse);
         let mut xr = xr_hands::XrHands::default();

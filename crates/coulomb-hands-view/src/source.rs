@@ -208,6 +208,12 @@ impl Source {
         }
     }
 
+    /// Whether the hands come from a live tracker (Leap or XR), which plays
+    /// at its own pace.
+    pub fn is_live(&self) -> bool {
+        matches!(self, Source::LiveXr { .. } | Source::LiveLeap { .. })
+    }
+
     /// The live Leap stream, when the hands are its.
     pub fn leap_feed(&self) -> Option<&LiveFeed> {
         match self {

@@ -7,7 +7,8 @@
 //! plugin's step set), so the physics of a viewed run is the headless
 //! run's, step for step. Speed scales Bevy's virtual clock. A seek back in
 //! time rebuilds the interaction from t = 0 and steps it to the target in
-//! one frame, which is exact because runs are deterministic.
+//! one frame, which is exact because runs are deterministic. Live hands
+//! play in real time: no speed but 1×, and no going back or on.
 
 use crate::ready::RendererReady;
 use crate::source::Source;
@@ -70,6 +71,10 @@ pub struct Transport {
     pub seek: Option<f64>,
     /// The end of a scenario or recording (s); a scene has none.
     pub end: Option<f64>,
+    /// Hands from a live tracker, which play at the tracker's own pace: the
+    /// speed and the ← → keys are off (a live stream has no future to go
+    /// to, and played faster it would only hold its newest frame).
+    pub live: bool,
     /// Screenshots still to take, in time order.
     shots: VecDeque<Shot>,
     /// Frames the first shot has waited, held at its time.
@@ -91,6 +96,7 @@ impl Transport {
             step_once: false,
             seek: None,
             end,
+            live: false,
             shots: shots.into(),
             shot_frames: 0,
             exit_after,
@@ -152,8 +158,8 @@ pub fn spend_single_step(mut transport: ResMut<Transport>) {
 }
 
 /// The playback keys: Space pauses, `.` steps once (pausing), `[` and `]`
-/// halve and double the speed, ← and → go back and on by a second, Home
-/// restarts.
+/// halve and double the speed, ← and → go back and on by a second (these
+/// four not with live hands), Home restarts.
 pub fn playback_keys(
     keys: Res<ButtonInput<KeyCode>>,
     mut transport: ResMut<Transport>,
@@ -168,16 +174,17 @@ pub fn playback_keys(
     if keys.just_pressed(KeyCode::Period) {
         (t.paused, t.step_once) = (true, true);
     }
-    if keys.just_pressed(KeyCode::BracketLeft) {
+    let replayed = !t.live;
+    if replayed && keys.just_pressed(KeyCode::BracketLeft) {
         t.speed = t.speed.saturating_sub(1);
     }
-    if keys.just_pressed(KeyCode::BracketRight) {
+    if replayed && keys.just_pressed(KeyCode::BracketRight) {
         t.speed = (t.speed + 1).min(SPEEDS.len() - 1);
     }
-    if keys.just_pressed(KeyCode::ArrowLeft) {
+    if replayed && keys.just_pressed(KeyCode::ArrowLeft) {
         t.seek = Some((now - 1.0).max(0.0));
     }
-    if keys.just_pressed(KeyCode::ArrowRight) {
+    if replayed && keys.just_pressed(KeyCode::ArrowRight) {
         t.seek = Some(now + 1.0);
     }
     if keys.just_pressed(KeyCode::Home) {
@@ -340,5 +347,38 @@ mod tests {
         assert!(!t.allows_step(1.0, dt));
         t.step_once = true;
         assert!(t.allows_step(1.0, dt), "one step while paused");
+    }
+
+    /// The transport after `keys` are pressed in one frame.
+    fn after_keys(live: bool, keys: &[KeyCode]) -> Transport {
+        use bevy::ecs::system::RunSystemOnce;
+        let mut world = World::new();
+        let mut input = ButtonInput::<KeyCode>::default();
+        keys.iter().for_each(|&key| input.press(key));
+        let mut transport = Transport::new(None, vec![], None);
+        transport.live = live;
+        world.insert_resource(input);
+        world.insert_resource(transport);
+        world.insert_resource(Time::<Virtual>::default());
+        world.run_system_once(playback_keys).unwrap();
+        world.remove_resource::<Transport>().unwrap()
+    }
+
+    #[test]
+    fn live_hands_play_at_one_speed_with_no_seeking_but_pause_and_restart() {
+        use KeyCode::{ArrowLeft, ArrowRight, BracketLeft, BracketRight, Home, Space};
+        let one = Transport::new(None, vec![], None).speed;
+        for live in [false, true] {
+            let faster = after_keys(live, &[BracketRight, BracketRight]);
+            let slower = after_keys(live, &[BracketLeft]);
+            let on = after_keys(live, &[ArrowRight]);
+            let back = after_keys(live, &[ArrowLeft, Space]);
+            assert_eq!(faster.speed == one, live, "live {live}: faster");
+            assert_eq!(slower.speed == one, live, "live {live}: slower");
+            assert_eq!(on.seek.is_none(), live, "live {live}: on by a second");
+            assert_eq!(back.seek.is_none(), live, "live {live}: back");
+            assert!(back.paused, "live {live}: Space pauses");
+            assert_eq!(after_keys(live, &[Home]).seek, Some(0.0), "live {live}: Home");
+        }
     }
 }
