@@ -46,9 +46,7 @@ impl LiveLeap {
     /// service's version greeting, events) are passed over; malformed
     /// frames are skipped and counted. `Ok(None)` when the stream closes.
     pub fn next_frame(&mut self) -> Result<Option<TrackingFrame>, InputError> {
-        if let MaybeTlsStream::Plain(tcp) = self.socket.get_ref() {
-            tcp.set_read_timeout(None).map_err(|e| self.fail(e.to_string()))?;
-        }
+        self.wait_at_most(None)?;
         self.read_frame(None)
     }
 
@@ -61,13 +59,23 @@ impl LiveLeap {
         &mut self,
         stop: &AtomicBool,
     ) -> Result<Option<TrackingFrame>, InputError> {
-        match self.socket.get_ref() {
-            MaybeTlsStream::Plain(tcp) => {
-                tcp.set_read_timeout(Some(STOP_POLL)).map_err(|e| self.fail(e.to_string()))?
-            }
-            _ => return Err(self.fail("only a plain ws:// stream can be read on a thread".into())),
+        if !self.wait_at_most(Some(STOP_POLL))? {
+            return Err(self.fail("only a plain ws:// stream can be read on a thread".into()));
         }
         self.read_frame(Some(stop))
+    }
+
+    /// Sets how long a read waits for a message (`None`: for as long as it
+    /// takes). `false` for a stream that is not a plain socket, which keeps
+    /// waiting for as long as it takes.
+    fn wait_at_most(&self, timeout: Option<Duration>) -> Result<bool, InputError> {
+        match self.socket.get_ref() {
+            MaybeTlsStream::Plain(tcp) => {
+                tcp.set_read_timeout(timeout).map_err(|e| self.fail(e.to_string()))?;
+                Ok(true)
+            }
+            _ => Ok(false),
+        }
     }
 
     fn fail(&self, reason: String) -> InputError {

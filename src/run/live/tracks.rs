@@ -66,7 +66,7 @@ impl Tracks {
     /// newest.
     pub(super) fn take(&mut self, frame: TrackingFrame) {
         let start = *self.start_us.get_or_insert(frame.timestamp_us);
-        let mut time = frame.timestamp_us.saturating_sub(start) as f64 * 1e-6;
+        let mut time = seconds_since(start, frame.timestamp_us);
         if let Some((held, held_time)) = self.held.take() {
             if time < held_time {
                 self.dropped += 1; // the held jump was the glitch
@@ -89,7 +89,7 @@ impl Tracks {
             let newest_us = ((self.newest * 1e6).round() as i64).saturating_add(1);
             let start = frame.timestamp_us.saturating_sub(newest_us);
             self.start_us = Some(start);
-            time = frame.timestamp_us.saturating_sub(start) as f64 * 1e-6;
+            time = seconds_since(start, frame.timestamp_us);
         }
         self.behind = None;
         if time > self.newest.max(0.0) + JUMP_AHEAD {
@@ -141,6 +141,11 @@ impl Tracks {
             samples.drain(..before - 1);
         }
     }
+}
+
+/// A timestamp (µs) on the clock whose zero is `start_us`, in s.
+fn seconds_since(start_us: i64, timestamp_us: i64) -> f64 {
+    timestamp_us.saturating_sub(start_us) as f64 * 1e-6
 }
 
 #[cfg(test)]
