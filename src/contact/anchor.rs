@@ -262,10 +262,21 @@ impl Anchor {
         let site = if recentre { site_under_bone(&motion.now, object, here) } else { here };
         let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, site.point, site.normal);
         let p_new = bone_anchor.point(motion.now, site.normal);
+        // The kinetic stretch is kept from the point of the site's tangent
+        // plane under the bone: the re-centred site, or, where none was
+        // found (a bone crossing a curved face askew, or no re-centring),
+        // p's foot on C's tangent plane. Kept from C itself, it would carry
+        // C one stretch further from the bone every step, round a curved
+        // face and ever deeper below it.
+        let under = if site == here {
+            p_new + (site.point - p_new).dot(site.normal) * site.normal
+        } else {
+            site.point
+        };
         let target = kinetic.map(|mu| {
             let d = at.c - at.p;
             let stretch_t = d - d.dot(at.n) * at.n;
-            site.point + crate::friction::slipped_stretch(stretch_t, normal_force, mu, object.gamma)
+            under + crate::friction::slipped_stretch(stretch_t, normal_force, mu, object.gamma)
         });
         let Some(moved) = surface::slide(object.shape, pose, site, target, p_new, probe_offset)
         else {

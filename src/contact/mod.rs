@@ -117,6 +117,13 @@ impl ObjectView<'_> {
     fn velocity_at(&self, q: Vec3) -> Vec3 {
         self.linvel + self.angvel.cross(q - self.center_of_mass)
     }
+
+    /// The object as one contact sees it: with `share` (0 to 1) of its γ
+    /// and damping, the contact's share of its virtual finger's.
+    #[inline]
+    pub fn shared(self, share: f32) -> Self {
+        ObjectView { gamma: self.gamma * share, damping: self.damping * share, ..self }
+    }
 }
 
 /// Step-wide settings of the contact law.
@@ -136,13 +143,30 @@ pub(crate) struct LawSettings {
     pub recentre: bool,
 }
 
-/// The reaction on the bone before the friction cone.
-struct Reaction {
-    /// The damped spring force on the bone (N).
-    force: Vec3,
-    /// How deep p is below C (m), and how deep the spring sees it.
-    depth: f32,
-    seen_depth: f32,
+/// How a contact presses this step, before any force: where its anchors
+/// are, and how deep its spring sees the bone. Found for every contact
+/// before any is updated, since contacts of one hand share γ by how deep
+/// each presses ([`crate::friction::grip`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Press {
+    site: Site,
+    /// How deep p is below C along n (m); negative while hovering.
+    pub depth: f32,
+    /// The depth after the penetration-speed limit, before the cap (m).
+    limited: f32,
+    /// The depth the spring sees: the speed limit, then the cap (m).
+    pub seen: f32,
+    /// The bone's and the object's velocities at the contact (m/s).
+    bone_velocity: Vec3,
+    object_velocity: Vec3,
+}
+
+impl Press {
+    /// The contact normal (world, unit): see [`Contact::normal`].
+    #[inline]
+    pub fn normal(&self) -> Vec3 {
+        self.site.n
+    }
 }
 
 impl Contact {
@@ -173,17 +197,49 @@ impl Contact {
         }
     }
 
+    /// How this contact presses this step ([`Press`]): its anchors' site,
+    /// and the depth its spring sees under the penetration-speed limit and
+    /// the force cap. Changes nothing: [`Self::update`] keeps the limited
+    /// depth for the next step.
+    pub(crate) fn press(
+        &self,
+        object: &ObjectView,
+        motion: &BoneMotion,
+        settings: &LawSettings,
+    ) -> Press {
+        let site = self.anchor.site(object, motion);
+        let depth = (site.c - site.p).dot(site.n);
+        let object_velocity = object.velocity_at(site.c);
+        let bone_velocity = (site.p - site.p_prev) / settings.dt;
+        let limited = match settings.max_penetration_speed {
+            Some(v) => {
+                let approach = object_velocity.dot(site.n);
+                let bone_speed = -bone_velocity.dot(site.n);
+                let previous = self.anchor.limited_depth;
+                friction::speed_limited_depth(depth, previous, approach, bone_speed, v, settings.dt)
+            }
+            None => depth,
+        };
+        let seen = object.cap.map_or(limited, |cap| cap.depth(limited));
+        Press { site, depth, limited, seen, bone_velocity, object_velocity }
+    }
+
     /// Evaluates the contact law for this step and updates the anchors:
     /// reaction → resolve → slip → spread over the patch. Appends the
     /// sample forces on the object, with their points, to
-    /// `scratch.applied` (nothing if it applies none).
+    /// `scratch.applied` (nothing if it applies none). `press` is this
+    /// step's [`Self::press`]; `object` carries the contact's own γ and
+    /// damping (its share of its virtual finger's, under the stability
+    /// limit).
     ///
     /// `proximity` is the bone–object closest-feature query, if the caller
     /// has run it; `detector` runs it when the contact needs it. A contact
     /// that stays static never does: its bone point is pressed in below C,
     /// inside the friction cone. Returns `false` when the contact has ended.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn update(
         &mut self,
+        press: &Press,
         proximity: Option<Proximity>,
         detector: &Detector,
         motion: &BoneMotion,
@@ -191,13 +247,14 @@ impl Contact {
         settings: &LawSettings,
         scratch: &mut patch::PatchScratch,
     ) -> bool {
-        let at = self.anchor.site(object, motion);
-        let reaction = self.reaction(&at, object, settings);
+        let at = press.site;
+        self.anchor.limited_depth = press.limited.max(0.0);
+        let reaction = Self::reaction(press, object, settings);
         let (gamma, mu) = (object.gamma, object.mu);
         let law = friction::contact_law(
-            reaction.force,
+            reaction,
             at.n,
-            reaction.seen_depth,
+            press.seen,
             gamma,
             mu,
             settings.kinetic,
@@ -205,14 +262,14 @@ impl Contact {
         );
         self.stiffness = gamma;
         self.bone_point = at.p;
-        self.depth = reaction.depth;
+        self.depth = press.depth;
         self.state = law.state;
         self.normal_force = law.normal.length();
         self.force = law.on_object();
 
         let touching = || proximity.or_else(|| detector.still_touching(&motion.now, object));
         match law.state {
-            FrictionState::Separated if reaction.depth > 0.0 => {
+            FrictionState::Separated if press.depth > 0.0 => {
                 // Still inside, but the damper says the surfaces part faster
                 // than the spring pushes: no force this step, anchors kept.
                 self.samples.clear();
@@ -249,30 +306,18 @@ impl Contact {
         true
     }
 
-    /// The damped spring on the bone, at the depth the safeguards let the
-    /// spring see: the penetration-speed limit, then the force cap.
-    fn reaction(&mut self, at: &Site, object: &ObjectView, settings: &LawSettings) -> Reaction {
-        let depth = (at.c - at.p).dot(at.n);
-        let object_velocity = object.velocity_at(at.c);
-        let mut bone_velocity = (at.p - at.p_prev) / settings.dt;
-        let limited = match settings.max_penetration_speed {
-            Some(v) => {
-                let approach = object_velocity.dot(at.n);
-                let bone_speed = -bone_velocity.dot(at.n);
-                let previous = self.anchor.limited_depth;
-                friction::speed_limited_depth(depth, previous, approach, bone_speed, v, settings.dt)
-            }
-            None => depth,
+    /// The damped spring on the bone (N), at the depth the safeguards let
+    /// the spring see ([`Press::seen`]), with the bone's speed into the
+    /// object, relative to it, limited for the damper too.
+    fn reaction(press: &Press, object: &ObjectView, settings: &LawSettings) -> Vec3 {
+        let at = &press.site;
+        let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, press.seen);
+        let (bone, object_velocity) = (press.bone_velocity, press.object_velocity);
+        let relative_velocity = match settings.max_penetration_speed {
+            Some(v) => friction::limited_relative_velocity(bone, object_velocity, at.n, v),
+            None => bone - object_velocity,
         };
-        self.anchor.limited_depth = limited.max(0.0);
-        let seen_depth = object.cap.map_or(limited, |cap| cap.depth(limited));
-        let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, seen_depth);
-        if let Some(v) = settings.max_penetration_speed {
-            bone_velocity = friction::limited_bone_velocity(bone_velocity, at.n, v);
-        }
-        let relative_velocity = bone_velocity - object_velocity;
-        let force = friction::damped_spring_force(spring, object.damping, relative_velocity);
-        Reaction { force, depth, seen_depth }
+        friction::damped_spring_force(spring, object.damping, relative_velocity)
     }
 
     /// Spreads this step's force over the skin patch (§3.5.4).

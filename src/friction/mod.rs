@@ -11,7 +11,10 @@
 //!   damper);
 //! * [`slip`]: where a slipping spring re-anchors, one rule for a whole
 //!   contact and for each skin-patch sample;
-//! * [`gamma`]: the contact stiffness γ, Eq. 3.11.
+//! * [`gamma`]: the contact stiffness γ, Eq. 3.11;
+//! * [`grip`]: the whole grip: the two sides of one hand's grip press as
+//!   equally stiff virtual fingers, and the pad's damper loses what a
+//!   fingertip does.
 //!
 //! # Sign convention (used everywhere in the crate)
 //! * `n` is the **outward** unit surface normal of the object at the contact
@@ -26,18 +29,23 @@
 //! Units: lengths in metres, forces in newtons, γ in N/m, speeds in m/s.
 
 pub mod gamma;
+pub mod grip;
 pub mod law;
 pub mod safeguards;
 pub mod slip;
 
 pub use gamma::{MAX_PENETRATION_FRACTION, auto_gamma};
+pub use grip::{
+    DepthSums, FINGERTIP_DISSIPATION, Sides, pad_damping_ratio, released_energy_fraction,
+    side_count, sides, virtual_finger_factor,
+};
 pub use law::{
     inside_friction_cone, resolve, split_normal_tangential, spring_force, tangential_friction,
     total_force,
 };
 pub use safeguards::{
-    ForceCap, damped_spring_force, damping_coefficient, limited_bone_velocity, speed_limited_depth,
-    spring_at_depth,
+    ForceCap, damped_spring_force, damping_coefficient, limited_relative_velocity,
+    speed_limited_depth, spring_at_depth,
 };
 pub use slip::{kinetic_stretch, slipped_stretch, slips};
 

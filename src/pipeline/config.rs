@@ -2,7 +2,7 @@
 //! parameters they imply.
 
 use crate::contact::patch::PatchConfig;
-use crate::friction::KineticFriction;
+use crate::friction::{FINGERTIP_DISSIPATION, KineticFriction};
 use crate::grab::GrabMethod;
 use crate::scene::{GammaMode, Scene};
 use glam::Vec3;
@@ -35,8 +35,18 @@ pub struct InteractionConfig {
     pub patch: PatchConfig,
     /// Damping ratio ζ of each contact spring, or `None` for the thesis's
     /// pure spring. The damper acts on the bone-vs-object velocity at the
-    /// contact with `c = 2ζ√(γ m)`.
+    /// contact with `c = 2ζ√(γ m)` (times the contact's share of its
+    /// virtual finger). The default, 0.76, is the ζ at which a pad that
+    /// pushes an object away from rest gives back 19 % of the energy that
+    /// loaded it, as a fingertip does (81 % dissipated:
+    /// [`crate::friction::grip`]).
     pub damping_ratio: Option<f32>,
+    /// The contacts of one hand that press one object from the same side
+    /// share one γ, as one virtual finger (default), so that a thumb
+    /// balances any number of fingers and a still hand that opens lets go
+    /// of its object without pushing it ([`crate::friction::grip`]). Off,
+    /// each contact has the whole γ, as in the thesis.
+    pub virtual_fingers: bool,
     /// Cap each contact's spring at the thesis's assumed 20 % maximum
     /// penetration of the object's bounding diameter d: its normal spring
     /// force stays ≤ `γ·0.2·d` however deep a bone is
@@ -99,7 +109,7 @@ impl Default for InteractionConfig {
             gamma: GammaMode::default(),
             kinetic: KineticFriction::Coulomb,
             patch: PatchConfig::default(),
-            damping_ratio: Some(0.5),
+            damping_ratio: crate::friction::pad_damping_ratio(FINGERTIP_DISSIPATION),
             force_cap: true,
             max_penetration_speed: Some(1.0),
             probe_offset: 0.004,
@@ -108,6 +118,7 @@ impl Default for InteractionConfig {
             deviation_springs: true,
             slip_recentre: true,
             stability_limit: true,
+            virtual_fingers: true,
             grab: None,
             hand_friction: true,
         }

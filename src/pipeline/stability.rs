@@ -1,7 +1,8 @@
 //! Stage 4 of a step: the stability limit of each object's contact springs.
 //!
 //! Contact springs and dampers are explicit forces, integrated by rapier
-//! with symplectic Euler. A set of springs Σγ on a body is stable while
+//! with symplectic Euler. A set of springs Σγ_i on a body (each contact's
+//! share of its virtual finger's γ) is stable while
 //! `dt²·Σ γ_i w_i` stays well below 4, where `w_i = 1/m + |r_i|²/I_min`
 //! bounds how much the contact point at lever arm `r_i` accelerates per
 //! newton (linear plus rotational). The dampers need `dt·Σ c_i w_i < 2`.
@@ -43,16 +44,17 @@ impl InteractionWorld {
         step.limits.clear();
         let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };
         step.limits.resize(self.objects.len(), none);
-        // The kept contacts, then the new ones: the order they are updated in.
+        // The kept contacts, then the new ones: the order they are updated
+        // in, and of their shares of their virtual fingers' γ.
         let found = step.found.iter().map(|c| &c.contact);
-        for c in self.contacts.iter().chain(found) {
+        for (c, &share) in self.contacts.iter().chain(found).zip(&step.shares) {
             let o = c.object.0 as usize;
             let slot = &self.objects[o];
             let body = &self.physics.bodies[slot.body];
             let inv_inertia =
                 body.mass_properties().local_mprops.inv_principal_inertia.max_element();
             let r = c.point - body.center_of_mass();
-            let w = 1.0 / slot.mass + r.length_squared() * inv_inertia;
+            let w = share * (1.0 / slot.mass + r.length_squared() * inv_inertia);
             step.limits[o].stiffness += slot.gamma * w;
             step.limits[o].damping += self.nominal_damping(slot) * w;
             step.limits[o].contacts += 1;

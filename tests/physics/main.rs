@@ -1,6 +1,7 @@
 //! Physical-outcome tests of the core: every test asserts what happens to
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
+mod balance;
 mod baselines;
 mod bench;
 mod controls;
@@ -9,6 +10,7 @@ mod evaluation;
 mod flat;
 mod glitch;
 mod grasp;
+mod grip;
 mod lifecycle;
 mod live;
 mod live_feed;
@@ -16,6 +18,7 @@ mod meshes;
 mod pinch;
 mod push;
 mod recordings;
+mod release;
 mod safety;
 mod scenarios;
 mod throw;

@@ -25,6 +25,7 @@ mod clear;
 mod find;
 mod grab;
 mod keep;
+mod share;
 mod update;
 
 pub(crate) use grab::GrabSlot;
@@ -36,7 +37,7 @@ use super::world::InteractionWorld;
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
 use crate::contact::{
-    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView,
+    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Press,
 };
 use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
@@ -63,8 +64,9 @@ impl InteractionWorld {
         self.clear_forces();
         self.keep_contacts(&mut step);
         self.find_new_contacts(&mut step);
+        self.press_contacts(&mut step);
         self.stability_limits(&mut step);
-        // Stages 5 and 6 go contact by contact, so each patch's forces reach
+        // Stages 6 and 7 go contact by contact, so each patch's forces reach
         // rapier while they are still in cache: the kept contacts in place,
         // in their order, then the new ones.
         let mut contacts = std::mem::take(&mut self.contacts);
@@ -73,9 +75,13 @@ impl InteractionWorld {
         for (i, &proximity) in kept.iter().enumerate() {
             let contact = &mut contacts[i];
             // The poses have not changed since `keep_contacts` found it.
-            let alive = match self.motion(contact.hand, contact.bone) {
-                Some(motion) => self.update_contact(contact, proximity, &motion, false, &mut step),
-                None => {
+            let motion = self.motion(contact.hand, contact.bone);
+            let alive = match (motion, step.presses[i]) {
+                (Some(motion), Some(press)) => {
+                    let touch = Touch { press, proximity, motion, index: i };
+                    self.update_contact(contact, &touch, false, &mut step)
+                }
+                _ => {
                     self.push_event(ContactEventKind::Ended, contact);
                     false
                 }
@@ -88,8 +94,11 @@ impl InteractionWorld {
         }
         contacts.truncate(live);
         let mut found = std::mem::take(&mut step.found);
-        for Candidate { mut contact, proximity, motion } in found.drain(..) {
-            if self.update_contact(&mut contact, proximity, &motion, true, &mut step) {
+        for (j, Candidate { mut contact, proximity, motion }) in found.drain(..).enumerate() {
+            let index = kept.len() + j;
+            let Some(press) = step.presses[index] else { continue };
+            let touch = Touch { press, proximity, motion, index };
+            if self.update_contact(&mut contact, &touch, true, &mut step) {
                 self.apply_forces(contact.object, &step.patch.applied);
                 contacts.push(contact);
             }
@@ -167,6 +176,18 @@ pub(super) struct Candidate {
     pub motion: BoneMotion,
 }
 
+/// What stage 6 knows of a contact it updates.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Touch {
+    /// This step's press, found by stage 4.
+    pub press: Press,
+    /// The closest features, if a stage has queried them this step.
+    pub proximity: Option<Proximity>,
+    pub motion: BoneMotion,
+    /// The contact's place in this step's presses and shares.
+    pub index: usize,
+}
+
 /// The order of [`InteractionWorld::contacts`]: by object, then hand, then
 /// bone, so each object's contacts are one run.
 fn contact_key(c: &Contact) -> (ObjectId, HandId, usize) {
@@ -188,6 +209,14 @@ pub(crate) struct StepScratch {
     pub(super) patch: PatchScratch,
     /// The contact law's settings, from the world's config.
     pub(super) settings: LawSettings,
+    /// Per contact (the kept ones in order, then the new ones): how it
+    /// presses this step (`None` for a kept contact whose hand is gone),
+    /// whose virtual fingers it belongs to, and its share of their γ.
+    pub(super) presses: Vec<Option<Press>>,
+    pub(super) sides: Vec<share::SideKey>,
+    pub(super) shares: Vec<f32>,
+    /// The pressing contacts' indices, grouped by side key.
+    pub(super) order: Vec<usize>,
 }
 
 impl StepScratch {

@@ -1,0 +1,81 @@
+//! Stage 4: how each contact presses, and its factor on γ as part of its
+//! hand's virtual fingers ([`crate::friction::grip`]).
+
+use super::StepScratch;
+use crate::contact::{Contact, Press};
+use crate::friction;
+use crate::hand::HandId;
+use crate::pipeline::InteractionWorld;
+use crate::pipeline::stability::StabilityScale;
+use crate::scene::ObjectId;
+
+impl InteractionWorld {
+    /// Finds every contact's [`Press`] (the kept contacts in their order,
+    /// then the new ones) and, with the config's virtual fingers, each
+    /// one's factor on γ among the pressing contacts of its hand on its
+    /// object ([`friction::virtual_finger_factor`]); without them, or for a
+    /// contact that does not press, the factor is 1.
+    pub(super) fn press_contacts(&mut self, step: &mut StepScratch) {
+        step.presses.clear();
+        step.sides.clear();
+        let settings = step.settings;
+        for contact in self.contacts.iter() {
+            // Kept contacts' hands are tracked: `keep_contacts` ended the others.
+            let press = self.motion(contact.hand, contact.bone).map(|motion| {
+                let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
+                contact.press(&object, &motion, &settings)
+            });
+            step.presses.push(press);
+            step.sides.push(side_key(contact));
+        }
+        for candidate in step.found.iter() {
+            let c = &candidate.contact;
+            let object = self.object_view(c.object.0 as usize, StabilityScale::NONE);
+            step.presses.push(Some(c.press(&object, &candidate.motion, &settings)));
+            step.sides.push(side_key(c));
+        }
+        step.shares.clear();
+        step.shares.resize(step.presses.len(), 1.0);
+        if self.config.virtual_fingers {
+            share_by_side(&step.sides, &step.presses, &mut step.order, &mut step.shares);
+        }
+    }
+}
+
+/// Whose virtual fingers a contact belongs to: its object's and its hand's.
+pub(super) type SideKey = (ObjectId, HandId);
+
+fn side_key(c: &Contact) -> SideKey {
+    (c.object, c.hand)
+}
+
+/// Each pressing contact's factor on γ: `shares[i]` for
+/// the contact of key `keys[i]` and press `presses[i]`. Contacts are
+/// grouped by key through `order`, a buffer kept between steps.
+fn share_by_side(
+    keys: &[SideKey],
+    presses: &[Option<Press>],
+    order: &mut Vec<usize>,
+    shares: &mut [f32],
+) {
+    let key = |i: usize| keys[i];
+    let pressing = |i: usize| presses[i].filter(|p| p.seen > 0.0);
+    order.clear();
+    order.extend((0..keys.len()).filter(|&i| pressing(i).is_some()));
+    // Stable, so equal keys keep the contacts' own order: the same sums in
+    // the same order every run.
+    order.sort_by_key(|&i| key(i));
+    for group in order.chunk_by(|&a, &b| key(a) == key(b)) {
+        if group.len() < 2 {
+            continue;
+        }
+        for &i in group {
+            let Some(own) = pressing(i) else { continue };
+            let sides = friction::sides(
+                own.normal(),
+                group.iter().filter_map(|&j| pressing(j)).map(|p| (p.normal(), p.seen)),
+            );
+            shares[i] = friction::virtual_finger_factor(own.seen, &sides);
+        }
+    }
+}
