@@ -5,7 +5,7 @@
 use super::progress_bar;
 use coulomb_hands::eval::AccuracyOptions;
 use coulomb_hands::output::report::{
-    AccuracyStudy, BenchReport, Header, ReportData, Sourced, html, utc_date,
+    Ablation, AccuracyStudy, BenchReport, Header, ReportData, Sourced, SweepStudy, html, utc_date,
 };
 use coulomb_hands::run::bench::{BenchOptions, mujoco};
 use coulomb_hands::run::report::{ReplayInput, bundled_recordings, scenario_run};
@@ -17,6 +17,8 @@ pub struct ReportArgs<'a> {
     pub out: &'a Path,
     pub accuracy: Source<'a, AccuracyOptions>,
     pub bench: Source<'a, BenchOptions>,
+    pub sweep: Option<&'a Path>,
+    pub ablation: Option<&'a Path>,
     pub scenarios: Option<&'a [String]>,
     pub replays: Option<&'a [PathBuf]>,
 }
@@ -61,9 +63,14 @@ fn writable(dir: &Path) -> Result<(), String> {
     std::fs::remove_file(&probe).map_err(fail)
 }
 
+/// A section given as a file, or left out: the report does not run it.
+fn given(file: Option<&Path>) -> Source<'_, ()> {
+    file.map_or(Source::Skip, Source::File)
+}
+
 /// `source`'s data read from its file, if it is one.
 fn read<T, O>(
-    source: &Source<O>,
+    source: &Source<'_, O>,
     load: fn(&Path) -> Result<T, coulomb_hands::FileError>,
     command: &str,
 ) -> Result<Option<Sourced<T>>, coulomb_hands::FileError> {
@@ -146,6 +153,9 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     let accuracy_file =
         read(&args.accuracy, AccuracyStudy::load, "coulomb-hands eval accuracy --json")?;
     let bench_file = read(&args.bench, BenchReport::load, "coulomb-hands bench --json")?;
+    let sweep = read(&given(args.sweep), SweepStudy::load, "coulomb-hands eval sweep --json")?;
+    let ablation =
+        read(&given(args.ablation), Ablation::load, "coulomb-hands eval ablation --json")?;
     let names: Vec<String> = match args.scenarios {
         Some(names) => names.to_vec(),
         None => shipped().iter().map(|s| s.0.to_string()).collect(),
@@ -202,13 +212,20 @@ pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
     let replays = Sourced {
         source: format!(
             "replayed by this command: {which}, at the 1 kHz physics rate with the replay's \
-             defaults (γ = 400 N/m) and a box at every closing of a hand (4.5 cm, 50 g if the \
+             defaults (γ = 400 N/m) and a box at every closing of a hand (4 cm, 50 g if the \
              first closing is a fist; 2 cm, 10 g otherwise)"
         ),
         data: replay_runs,
     };
-    let data =
-        ReportData { header, accuracy, bench, scenarios: Some(scenarios), replays: Some(replays) };
+    let data = ReportData {
+        header,
+        accuracy,
+        sweep,
+        ablation,
+        bench,
+        scenarios: Some(scenarios),
+        replays: Some(replays),
+    };
     let path = args.out.join("index.html");
     std::fs::write(&path, html(&data)).map_err(|e| format!("{}: {e}", path.display()))?;
     println!("wrote {}: {summary}", path.display());

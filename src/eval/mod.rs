@@ -1,30 +1,40 @@
 //! The evaluation of thesis Ch. 5, headless. [`accuracy`] is the
 //! positioning-accuracy study of §5.2 (Table 5.2): synthetic users move a
 //! cube across a chessboard with each method, and the placement errors
-//! are compared.
+//! are compared. [`sweep::sweep`] runs it at several strengths of real
+//! tracking noise and seeds, with confidence intervals; [`ablation`]
+//! gives the thesis's law as written this crate's departures one at a
+//! time.
 //!
 //! * [`board`]: the task's world (board, cube, squares);
 //! * [`grip`]: the users' hand;
+//! * [`noise`]: tracking noise and dropouts taken from real recordings;
+//! * [`perception`]: what a user sees of the cube, and how well;
 //! * [`user`]: a synthetic user, a closed-loop controller of one tracked
-//!   hand, and the eyes through which it sees the cube.
+//!   hand, and the eyes through which it sees the cube;
+//! * [`trial`]: one trial, and many on several threads;
+//! * [`stats`]: means and proportions with confidence intervals.
 
+pub mod ablation;
 pub mod board;
 pub mod grip;
+pub mod noise;
+pub mod perception;
+pub mod stats;
+pub mod sweep;
+pub mod trial;
 pub mod user;
 
 pub use crate::output::report::{AccuracyStudy, MethodResult, ThesisResult};
+pub use trial::{TRIAL_LIMIT, Trial};
+pub use user::Strategy;
 
 use crate::output::report::THESIS_TABLE_5_2;
 use crate::pipeline::{InteractionConfig, Method};
 use crate::run::RunError;
-use crate::run::drive::Driver;
-use glam::Vec3;
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
-use user::{Eyes, User, UserParams};
-
-/// A trial that has not finished after this long (s) has failed.
-pub const TRIAL_LIMIT: f64 = 40.0;
+use noise::TrackingNoise;
+use std::path::PathBuf;
+use trial::{Condition, TrialRun};
 
 /// What to run.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,31 +43,85 @@ pub struct AccuracyOptions {
     pub users: usize,
     /// Trials per user (the thesis had 20).
     pub trials: usize,
-    /// Seed of users, squares and jitter.
+    /// Seed of users, squares, tracking noise and glances.
     pub seed: u64,
     /// The methods compared, each on the same users and trials.
     pub methods: Vec<Method>,
+    /// How the users move the cube: each method is run with each.
+    pub strategies: Vec<Strategy>,
+    /// Tracking noise, times the recordings' (0: a perfect tracker).
+    pub noise: f32,
+    /// How the trials run, besides the noise's strength.
+    pub conditions: Conditions,
+}
+
+/// How every trial of a study runs, besides its noise strength: shared
+/// by [`AccuracyOptions`], [`sweep::SweepOptions`] and
+/// [`ablation::AblationOptions`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Conditions {
+    /// The glances' errors, times the display's (0: exact sight).
+    pub perception: f32,
+    /// The recordings to take the noise from (none: the bundled ones).
+    pub noise_from: Vec<PathBuf>,
+    /// Threads to run trials on (the outcomes do not depend on it).
+    pub threads: usize,
+}
+
+impl Default for Conditions {
+    fn default() -> Self {
+        Conditions { perception: 1.0, noise_from: Vec::new(), threads: trial::default_threads() }
+    }
+}
+
+impl Conditions {
+    /// Checks the glance scale and loads the tracking noise.
+    pub(crate) fn noise(&self) -> Result<TrackingNoise, RunError> {
+        check_scale("perception", self.perception)?;
+        TrackingNoise::load(&self.noise_from)
+    }
 }
 
 impl Default for AccuracyOptions {
     fn default() -> Self {
-        AccuracyOptions { users: 6, trials: 20, seed: 1, methods: Method::ALL.to_vec() }
+        AccuracyOptions {
+            users: 6,
+            trials: 20,
+            seed: 1,
+            methods: Method::ALL.to_vec(),
+            strategies: Strategy::ALL.to_vec(),
+            noise: 1.0,
+            conditions: Conditions::default(),
+        }
     }
 }
 
-/// One trial's outcome.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Trial {
-    /// Horizontal distance from the cube's centre to the target square's
-    /// centre at the end (m).
-    pub error: f32,
-    /// Time until the user was done (s), or the limit.
-    pub time: f64,
-    /// The user did not finish within [`TRIAL_LIMIT`], or the cube left
-    /// the board.
-    pub failed: bool,
-    /// Times the cube fell out of the hand while lifted or carried.
-    pub drops: usize,
+impl AccuracyOptions {
+    /// Checks what a run needs: users, trials, a method and a strategy,
+    /// and scales that are finite and not negative.
+    pub fn validate(&self) -> Result<(), RunError> {
+        check_scale("noise", self.noise)?;
+        check_some("users", self.users)?;
+        check_some("trials", self.trials)?;
+        check_some("method", self.methods.len())?;
+        check_some("strategy", self.strategies.len())
+    }
+}
+
+/// A scale of noise or of glance errors must be finite and ≥ 0.
+pub(crate) fn check_scale(field: &'static str, v: f32) -> Result<(), RunError> {
+    if v.is_finite() && v >= 0.0 {
+        return Ok(());
+    }
+    Err(RunError::Study { field, reason: format!("must be a finite scale ≥ 0, got {v}") })
+}
+
+/// A count the study needs at least one of.
+pub(crate) fn check_some(field: &'static str, n: usize) -> Result<(), RunError> {
+    if n > 0 {
+        return Ok(());
+    }
+    Err(RunError::Study { field, reason: "needs at least one".into() })
 }
 
 /// Table 5.2 of the thesis, as the study compares with it.
@@ -68,113 +132,79 @@ pub fn thesis_table() -> Vec<ThesisResult> {
     THESIS_TABLE_5_2.iter().map(row).collect()
 }
 
-/// One task: a user and their start and target squares.
-#[derive(Debug, Clone, Copy)]
-struct Task {
-    params: UserParams,
-    start: (usize, usize),
-    target: (usize, usize),
-    yaw: f32,
-    seed: u64,
-}
-
-/// The tasks of the study, the same for every method.
-fn tasks(options: &AccuracyOptions) -> Vec<Task> {
-    let mut out = Vec::new();
-    for u in 0..options.users {
-        let mut rng = ChaCha8Rng::seed_from_u64(options.seed ^ ((u as u64 + 1) * 0x9E37_79B9));
-        let params = UserParams::draw(&mut rng);
-        for _ in 0..options.trials {
-            let board::Placement { start, target, yaw } = board::draw_placement(&mut rng);
-            out.push(Task { params, start, target, yaw, seed: rng.random() });
-        }
-    }
-    out
-}
-
-/// Runs one trial with `method`.
-fn trial(method: Method, task: &Task) -> Result<Trial, RunError> {
-    let config = method.config(InteractionConfig::default());
-    let (mut world, cube) = board::world(config, task.start, task.yaw)?;
-    let target = board::square_center(task.target);
-    let begin = board::square_center(task.start) + Vec3::new(-0.1, 0.15, 0.0);
-    let sight = user::Sight::default();
-    let mut user = User::new(task.params, target, begin, sight.clone(), task.seed);
-    let mut eyes = Eyes { cube, sight };
-    let steps = (TRIAL_LIMIT / config.dt as f64).round() as usize;
-    {
-        let mut driver = Driver::new(&mut world);
-        driver.add_hand(&mut user);
-        driver.run(steps, &mut [&mut eyes])?;
-    }
-    let state = world.object_state(cube)?;
-    let error = board::placement_error(state.position, target);
-    let failed = user.done_at.is_none() || !board::on_board(state.position);
-    Ok(Trial { error, time: user.done_at.unwrap_or(TRIAL_LIMIT), failed, drops: user.drops })
-}
-
-/// Mean, sample standard deviation and median of `v`: not numbers for
-/// none, since a method that completed no trial has no error, not a zero
-/// one (the JSON writes `null`, the table and the report `—`).
-fn stats(v: &[f64]) -> (f64, f64, f64) {
-    if v.is_empty() {
-        return (f64::NAN, f64::NAN, f64::NAN);
-    }
-    let n = v.len() as f64;
-    let mean = v.iter().sum::<f64>() / n;
-    let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    let mut sorted = v.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let mid = sorted.len() / 2;
-    let median = if sorted.len().is_multiple_of(2) {
-        (sorted[mid - 1] + sorted[mid]) / 2.0
-    } else {
-        sorted[mid]
-    };
-    (mean, var.sqrt(), median)
-}
-
 /// One method's results from its trials, under the name `method` (a
 /// method's, or a person's row from the viewer's task).
 pub fn summarise(method: &str, trials: &[Trial]) -> MethodResult {
     let done: Vec<&Trial> = trials.iter().filter(|t| !t.failed).collect();
     let errors_mm: Vec<f64> = done.iter().map(|t| t.error as f64 * 1e3).collect();
-    let (mean_mm, sd_mm, median_mm) = stats(&errors_mm);
+    let (mean_mm, sd_mm, median_mm) = stats::describe(&errors_mm);
     let times: Vec<f64> = done.iter().map(|t| t.time).collect();
     MethodResult {
         method: method.into(),
+        strategy: None,
         mean_mm,
         sd_mm,
         median_mm,
         errors_mm,
-        mean_time_s: stats(&times).0,
+        mean_time_s: stats::describe(&times).0,
         times_s: times,
         failed: trials.len() - done.len(),
         drops: trials.iter().map(|t| t.drops).sum(),
+        held_across_mm: None,
     }
 }
 
-/// The positioning-accuracy study: every method on the same users and
-/// trials. `progress(done, total)` is called after each trial.
+/// The mean of where the cube sat across the grip (mm, towards the
+/// fingers) as the hands began to open on it, over the trials that got
+/// that far.
+fn held_across_mm(runs: &[TrialRun]) -> Option<f64> {
+    let across: Vec<f64> =
+        runs.iter().filter_map(|r| r.held_at).map(|p| f64::from(p.x) * 1e3).collect();
+    (!across.is_empty()).then(|| stats::describe(&across).0)
+}
+
+/// The positioning-accuracy study: every method with every strategy on
+/// the same users and trials. `progress(done, total)` is called as trials
+/// finish.
 pub fn accuracy(
     options: &AccuracyOptions,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<AccuracyStudy, RunError> {
-    let tasks = tasks(options);
-    let total = tasks.len() * options.methods.len();
+    options.validate()?;
+    let noise = options.conditions.noise()?;
+    let tasks = trial::tasks(options.users, options.trials, options.seed);
+    let runs = options.methods.len() * options.strategies.len();
+    let total = tasks.len() * runs;
     let mut methods = Vec::new();
-    for (m, &method) in options.methods.iter().enumerate() {
-        let mut trials = Vec::with_capacity(tasks.len());
-        for (k, task) in tasks.iter().enumerate() {
-            trials.push(trial(method, task)?);
-            progress(m * tasks.len() + k + 1, total);
-        }
-        methods.push(summarise(method.name(), &trials));
+    for (k, (&method, &strategy)) in options
+        .methods
+        .iter()
+        .flat_map(|m| options.strategies.iter().map(move |s| (m, s)))
+        .enumerate()
+    {
+        let condition = Condition {
+            config: method.config(InteractionConfig::default()),
+            strategy,
+            noise: &noise,
+            noise_scale: options.noise,
+            perception: options.conditions.perception,
+        };
+        let done = k * tasks.len();
+        let outcomes = trial::run_all(&condition, &tasks, options.conditions.threads, &mut |n| {
+            progress(done + n, total)
+        })?;
+        let trials: Vec<Trial> = outcomes.iter().map(|r| r.trial).collect();
+        let mut row = summarise(method.name(), &trials);
+        row.strategy = Some(strategy.name().to_string());
+        row.held_across_mm = held_across_mm(&outcomes);
+        methods.push(row);
     }
     Ok(AccuracyStudy {
         users: options.users,
         trials: options.trials,
         seed: options.seed,
+        noise: Some(options.noise),
+        perception: Some(options.conditions.perception),
         methods,
         thesis: thesis_table(),
     })

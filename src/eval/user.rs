@@ -1,54 +1,100 @@
 //! A synthetic user: a closed-loop controller of one tracked right hand
 //! that moves the cube of the placement task (thesis §5.2) to its target
-//! square. It reaches over the cube, descends, closes its grip, lifts,
-//! carries, lowers until the cube rests, opens and withdraws, then looks:
-//! if the cube is farther from the target than the user's tolerance, it
-//! corrects (at most [`MAX_CORRECTIONS`] times): a cube nearly in place
-//! ([`NUDGE_BELOW`]) it nudges with its open hand's thumb, as the thesis's
-//! users pushed and slid the cube; one farther away it grips and moves
-//! again.
+//! square, by either of the two ways the thesis's users placed it (§5.4):
 //!
-//! It perceives only the cube's pose ([`Eyes`]), never contacts, forces or
-//! grabs, and drives every method the same way. Its tracked hand is what a
-//! Leap Motion would report: the intended hand `latency` late, plus jitter
-//! of `jitter` metres rms per axis, drawn per tracker frame (100 Hz) and
-//! interpolated (Weichert et al. 2013 measured 0.2–1.2 mm).
-
+//! * [`Strategy::Lift`]: it reaches over the cube, descends, closes its
+//!   grip, lifts, carries, lowers until the cube rests, opens and
+//!   withdraws;
+//! * [`Strategy::Slide`]: it grips the cube where it rests and slides it
+//!   over the board between its fingers, then opens and withdraws.
+//!
+//! Then it looks: if the cube is farther from the target than the user's
+//! tolerance, it corrects (at most [`MAX_CORRECTIONS`] times): a cube
+//! nearly in place ([`NUDGE_BELOW`]) it nudges with its open hand's thumb,
+//! one farther away it moves again the same way.
+//!
+//! It knows the cube only from glances ([`super::perception`]), never
+//! contacts, forces or grabs, and drives every method the same way. Its
+//! tracked hand is what a tracker reports: the intended hand `latency`
+//! late, with real tracking noise on every joint and the dropouts of real
+//! tracking ([`super::noise`]).
 use super::board::CUBE_HALF;
 use super::grip::grip;
-use crate::hand::{HandSample, Side};
+use super::noise::{NoiseStream, Tracked};
+use super::perception::Perception;
+use crate::hand::{HandPose, HandSample, Side};
 use crate::run::RunError;
 use crate::run::drive::{HandSource, Observer, StepView};
 use crate::scene::ObjectId;
 use glam::{Quat, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rand_distr::{Distribution, Normal};
 use std::cell::Cell;
 use std::collections::VecDeque;
 use std::rc::Rc;
 
 /// Re-grips after the first placement, at most.
 pub const MAX_CORRECTIONS: usize = 3;
-/// The tracker's frame rate (Hz).
-const TRACKER_HZ: f64 = 100.0;
 /// Hover height of the open hand over the cube before descending (m).
 const HOVER: f32 = 0.06;
 /// How high the cube is carried (m above resting).
 const CARRY: f32 = 0.05;
-/// A cube this far below the grip's centre has left the hand (m).
+/// A cube this far from the grip's centre has left the hand (m).
 const DROPPED: f32 = 0.025;
+/// How fast a slide moves, as a share of the user's speed.
+const SLIDE_SPEED: f32 = 0.4;
 /// A cube nearer its target than this is nudged, not picked up again: by
 /// less than its half size it is nearly in place (m).
 pub const NUDGE_BELOW: f32 = CUBE_HALF;
 /// The longest a nudge pushes (s).
 const PUSH_FOR: f64 = 4.0;
 
+/// How a user moves the cube (thesis §5.4).
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Strategy {
+    /// Lift it, carry it, lower it onto the target.
+    #[default]
+    Lift,
+    /// Slide it over the board between the fingers.
+    Slide,
+}
+
+impl Strategy {
+    /// Both, in the order reports list them.
+    pub const ALL: [Strategy; 2] = [Strategy::Lift, Strategy::Slide];
+
+    /// Its name on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Strategy::Lift => "lift",
+            Strategy::Slide => "slide",
+        }
+    }
+}
+
+impl std::fmt::Display for Strategy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Strategy {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Strategy, String> {
+        Strategy::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| format!("unknown strategy \"{s}\": expected lift or slide"))
+    }
+}
+
 /// One user's own parameters, drawn per user.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct UserParams {
-    /// Tracking jitter, rms per axis (m).
-    pub jitter: f32,
     /// Tracking latency (s).
     pub latency: f64,
     /// Hand speed when far from a goal (m/s).
@@ -56,7 +102,7 @@ pub struct UserParams {
     /// How fast the hand closes on a goal (1/s): speed = gain × distance
     /// near it.
     pub gain: f32,
-    /// The placement error the user accepts (m).
+    /// The placement error the user accepts, as they see it (m).
     pub tolerance: f32,
     /// How deep the closed grip sinks the pads into the cube (m).
     pub squeeze: f32,
@@ -66,7 +112,6 @@ impl UserParams {
     /// A user drawn from `rng`.
     pub fn draw(rng: &mut ChaCha8Rng) -> UserParams {
         UserParams {
-            jitter: rng.random_range(0.0002..=0.0012),
             latency: rng.random_range(0.015..=0.045),
             speed: rng.random_range(0.2..=0.4),
             gain: rng.random_range(4.0..=6.0),
@@ -108,6 +153,8 @@ enum Phase {
     Lower {
         since: f64,
     },
+    /// Sliding the gripped cube over the board.
+    Slide,
     Release,
     /// Nudging the cube with the open hand's thumb towards the target.
     Push {
@@ -130,59 +177,74 @@ struct Intent {
 }
 
 /// A synthetic user doing one trial: a [`HandSource`].
-pub struct User {
+pub struct User<'a> {
     params: UserParams,
+    strategy: Strategy,
     target: Vec3,
     sight: Sight,
+    perception: Perception,
+    /// The tracker's noise and dropouts, if any.
+    tracking: Option<NoiseStream<'a>>,
     phase: Phase,
     intent: Intent,
     /// Recent intents, for the latency.
     history: VecDeque<Intent>,
-    /// The tracker frame before now, and the jitter at it and the next.
-    jitter: (i64, Vec3, Vec3),
+    /// The tracker's last report, held through a short dropout.
+    reported: Option<HandPose>,
     rng: ChaCha8Rng,
-    normal: Option<Normal<f32>>,
     corrections: usize,
     /// This correction nudges the cube instead of picking it up.
     nudge: bool,
-    /// Drops while the cube was lifted or carried.
+    /// Drops while the cube was lifted, carried or slid.
     pub drops: usize,
     /// When the user finished (s).
     pub done_at: Option<f64>,
+    /// Where the cube truly was in the grip's frame (x from the thumb to
+    /// the fingers, y up; m) when the hand first began to open on it, to
+    /// set it down: what the grip does to it while held shows here.
+    pub held_at: Option<Vec3>,
     last_t: f64,
 }
 
-impl User {
+impl<'a> User<'a> {
     /// A user with `params` who will move the cube to `target` (a square's
-    /// centre, m); its hand starts open `start` (m). `seed` draws its
-    /// jitter.
-    pub fn new(params: UserParams, target: Vec3, start: Vec3, sight: Sight, seed: u64) -> User {
+    /// centre, m) by `strategy`, seeing it through `perception`; its hand
+    /// starts open at `start` (m), tracked with `tracking` noise if any.
+    /// `seed` draws its glances and dropouts.
+    pub fn new(
+        params: UserParams,
+        strategy: Strategy,
+        target: Vec3,
+        start: Vec3,
+        (sight, perception): (Sight, Perception),
+        tracking: Option<NoiseStream<'a>>,
+        seed: u64,
+    ) -> User<'a> {
         let intent = Intent { t: 0.0, at: start, yaw: 0.0, closure: 0.0 };
-        // A jitter that is not a finite number ≥ 0 is no jitter.
-        let normal = Normal::new(0.0, params.jitter).ok();
-        let mut user = User {
+        User {
             params,
+            strategy,
             target,
             sight,
+            perception,
+            tracking,
             phase: Phase::Approach,
             intent,
             history: VecDeque::new(),
-            jitter: (0, Vec3::ZERO, Vec3::ZERO),
+            reported: None,
             rng: ChaCha8Rng::seed_from_u64(seed),
-            normal,
             corrections: 0,
             nudge: false,
             drops: 0,
             done_at: None,
+            held_at: None,
             last_t: 0.0,
-        };
-        user.jitter = (0, user.draw(), user.draw());
-        user
+        }
     }
 
     /// This user's first move is a nudge, as a correction of a cube
     /// nearly in place would be: it pushes instead of gripping.
-    pub fn nudging(mut self) -> User {
+    pub fn nudging(mut self) -> User<'a> {
         self.nudge = true;
         self
     }
@@ -203,14 +265,23 @@ impl User {
         (yaw - self.intent.yaw).abs()
     }
 
-    /// One control step at `t` (s), seeing the cube at `cube`.
-    fn control(&mut self, t: f64, dt: f32, cube: Vec3, rotation: Quat) {
+    /// One control step at `t` (s), the cube truly at `truth`.
+    fn control(&mut self, t: f64, dt: f32, truth: (Vec3, Quat)) {
+        let carried =
+            matches!(self.phase, Phase::Lift | Phase::Carry | Phase::Lower { .. } | Phase::Slide);
+        let (cube, rotation) =
+            self.perception.sees(t, truth, self.intent.at, carried, &mut self.rng);
         let to_target = (self.target - cube) * Vec3::new(1.0, 0.0, 1.0);
-        let carried = matches!(self.phase, Phase::Lift | Phase::Carry | Phase::Lower { .. });
-        if carried && cube.y < self.intent.at.y - DROPPED {
+        let off = cube - self.intent.at;
+        let lost = match self.phase {
+            Phase::Slide => (off * Vec3::new(1.0, 0.0, 1.0)).length() > DROPPED,
+            _ => off.y < -DROPPED,
+        };
+        if carried && lost {
             self.drops += 1;
             self.phase = Phase::Release;
         }
+        let tolerance = self.params.tolerance;
         self.phase = match self.phase {
             Phase::Approach => {
                 self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
@@ -232,10 +303,14 @@ impl User {
                     (true, true) => Phase::Push { since: t },
                 }
             }
-            Phase::Close { since } => {
+            Phase::Close { since } if t - since <= 0.5 => {
                 self.intent.closure = (self.intent.closure + dt / 0.35).min(1.0);
-                if t - since > 0.5 { Phase::Lift } else { Phase::Close { since } }
+                Phase::Close { since }
             }
+            Phase::Close { .. } => match self.strategy {
+                Strategy::Lift => Phase::Lift,
+                Strategy::Slide => Phase::Slide,
+            },
             Phase::Lift => {
                 let goal = Vec3::new(self.intent.at.x, CUBE_HALF + CARRY, self.intent.at.z);
                 if self.reach(goal, 0.5, dt) < 0.001 { Phase::Carry } else { Phase::Lift }
@@ -244,14 +319,33 @@ impl User {
                 let goal = self.intent.at + to_target;
                 let goal = Vec3::new(goal.x, CUBE_HALF + CARRY, goal.z);
                 self.reach(goal, 1.0, dt);
-                if to_target.length() < 0.001 { Phase::Lower { since: t } } else { Phase::Carry }
+                if to_target.length() < tolerance {
+                    Phase::Lower { since: t }
+                } else {
+                    Phase::Carry
+                }
+            }
+            Phase::Slide => {
+                // The hand keeps its height, so the cube stays on the board.
+                self.reach(self.intent.at + to_target, SLIDE_SPEED, dt);
+                if to_target.length() < tolerance {
+                    self.let_go(truth.0);
+                    Phase::Release
+                } else {
+                    Phase::Slide
+                }
             }
             Phase::Lower { since } => {
                 let above = cube.y - CUBE_HALF;
                 let goal = self.intent.at + to_target - Vec3::Y * above;
                 self.reach(goal, 0.25, dt);
                 let rests = above < 0.001 || t - since > 3.0;
-                if rests { Phase::Release } else { Phase::Lower { since } }
+                if rests {
+                    self.let_go(truth.0);
+                    Phase::Release
+                } else {
+                    Phase::Lower { since }
+                }
             }
             Phase::Release => {
                 self.intent.closure = (self.intent.closure - dt / 0.3).max(0.0);
@@ -262,7 +356,7 @@ impl User {
                 // target, keeping the hand's height.
                 let goal = self.intent.at + to_target;
                 self.reach(goal, 0.25, dt);
-                let there = to_target.length() < 0.5 * self.params.tolerance;
+                let there = to_target.length() < 0.5 * tolerance;
                 if there || t - since > PUSH_FOR {
                     self.nudge = false;
                     Phase::Withdraw
@@ -280,9 +374,7 @@ impl User {
             }
             Phase::Judge { since } if t - since < 0.3 => Phase::Judge { since },
             Phase::Judge { .. } => {
-                if to_target.length() <= self.params.tolerance
-                    || self.corrections >= MAX_CORRECTIONS
-                {
+                if to_target.length() <= tolerance || self.corrections >= MAX_CORRECTIONS {
                     self.done_at = Some(t);
                     Phase::Done
                 } else {
@@ -295,6 +387,13 @@ impl User {
         };
     }
 
+    /// Notes where the cube, truly at `cube`, sits in the grip as the hand
+    /// first begins to open on it.
+    fn let_go(&mut self, cube: Vec3) {
+        let local = Quat::from_rotation_y(-self.intent.yaw) * (cube - self.intent.at);
+        self.held_at.get_or_insert(local);
+    }
+
     /// The intent the tracker reports at `t`: the one `latency` ago.
     fn delayed(&mut self, t: f64) -> Intent {
         let then = t - self.params.latency;
@@ -302,24 +401,6 @@ impl User {
             self.history.pop_front();
         }
         self.history.front().copied().unwrap_or(self.intent)
-    }
-
-    /// The tracker's jitter at `t`: drawn per frame, interpolated
-    /// between frames.
-    fn jitter(&mut self, t: f64) -> Vec3 {
-        let frame = (t * TRACKER_HZ).floor() as i64;
-        while self.jitter.0 < frame {
-            let next = self.draw();
-            self.jitter = (self.jitter.0 + 1, self.jitter.2, next);
-        }
-        let s = (t * TRACKER_HZ - frame as f64) as f32;
-        self.jitter.1.lerp(self.jitter.2, s)
-    }
-
-    fn draw(&mut self) -> Vec3 {
-        let Some(normal) = self.normal else { return Vec3::ZERO };
-        let mut axis = || normal.sample(&mut self.rng);
-        Vec3::new(axis(), axis(), axis())
     }
 }
 
@@ -332,7 +413,7 @@ fn grip_yaw(rotation: Quat, current: f32) -> f32 {
     yaw + ((current - yaw) / quarter).round() * quarter
 }
 
-impl HandSource for User {
+impl HandSource for User<'_> {
     fn side(&self) -> Side {
         Side::Right
     }
@@ -340,21 +421,27 @@ impl HandSource for User {
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
         let dt = (t - self.last_t).max(0.0) as f32;
         self.last_t = t;
-        if let Some((cube, rotation)) = self.sight.get()
+        if let Some(truth) = self.sight.get()
             && self.phase != Phase::Done
         {
-            self.control(t, dt, cube, rotation);
+            self.control(t, dt, truth);
         }
         self.intent.t = t;
         self.history.push_back(self.intent);
         let seen = self.delayed(t);
-        let at = seen.at + self.jitter(t);
         let pose = grip(CUBE_HALF, seen.closure, self.params.squeeze).transformed(
             Vec3::ZERO,
             Quat::from_rotation_y(seen.yaw),
-            at,
+            seen.at,
         );
-        Ok(Some(HandSample::from_pose(pose)))
+        let reported = match self.tracking.as_mut().map(|s| s.at(t, &mut self.rng)) {
+            None => Some(pose),
+            Some(Tracked::Hand(noise)) => Some(noise.apply(&pose)),
+            Some(Tracked::Held) => self.reported.clone(),
+            Some(Tracked::Lost) => None,
+        };
+        self.reported.clone_from(&reported);
+        Ok(reported.map(HandSample::from_pose))
     }
 
     fn finished(&self) -> bool {

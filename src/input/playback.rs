@@ -31,6 +31,13 @@ pub struct Track {
     samples: Vec<(f64, HandSample)>,
 }
 
+impl Track {
+    /// `(time since the first frame in s, the hand then)`, frame by frame.
+    pub fn samples(&self) -> &[(f64, HandSample)] {
+        &self.samples
+    }
+}
+
 /// Frames converted to world poses, ready to be sampled at any time.
 #[derive(Debug, Clone)]
 pub struct Playback {

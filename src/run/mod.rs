@@ -49,6 +49,14 @@ pub enum RunError {
     /// Writing an output (a trace) failed.
     #[error("output: {0}")]
     Output(#[from] std::io::Error),
+    /// A study's option is out of range.
+    #[error("study: {field}: {reason}")]
+    Study {
+        /// The option, as the command line names it.
+        field: &'static str,
+        /// What is wrong with its value.
+        reason: String,
+    },
     /// An object was asked for at a grasp the recording does not have.
     #[error("the recording has {found} grasps, so there is no grasp {}", wanted + 1)]
     NoGrasp {

@@ -103,12 +103,14 @@ pub struct ReplayInput {
     pub playback: Playback,
 }
 
-/// The object held at a grasp: a 4.5 cm, 50 g box in a fist (the tracker's
+/// The object held at a grasp: a 4 cm, 50 g box in a fist (the tracker's
 /// grab strength at least ½ at the most closed instant), else a 2 cm, 10 g
-/// box, as README's replay examples hold.
+/// box, as README's replay examples hold. (A 4.5 cm box is wider than the
+/// gap an opened hand leaves between its index and ring fingers, 37 mm in
+/// `grab.json.lz`: it stays pinched between them.)
 pub fn grasp_object(playback: &Playback, track: usize, closed_at: f64) -> GraspObject {
     let fist = playback.sample(track, closed_at).and_then(|s| s.grab).is_some_and(|g| g >= 0.5);
-    let (size, mass) = if fist { (0.045, 0.05) } else { (0.02, 0.01) };
+    let (size, mass) = if fist { (0.04, 0.05) } else { (0.02, 0.01) };
     GraspObject { sphere: false, size, mass }
 }
 

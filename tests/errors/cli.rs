@@ -258,3 +258,41 @@ fn a_reader_that_stops_early_ends_the_program_quietly() {
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert_ne!(out.status.code(), Some(101), "{stderr}");
 }
+
+#[test]
+fn a_study_names_the_noise_recording_it_cannot_use() {
+    let dir = Scratch::new("cli-noise");
+    let quick = ["eval", "accuracy", "--users", "1", "--trials", "1", "--method", "kinematic"];
+    // A file that is not there.
+    let missing = dir.text("missing.json.lz");
+    let e = cli_error(&[&quick[..], &["--noise-from", &missing]].concat());
+    names(e, &[&missing, "No such file"]);
+    // A recording whose hand is tracked for only a tenth of a second.
+    let frames: Vec<_> = (0..12).map(|k| frame(k * 10_000, &[leap_hand(3)])).collect();
+    let short = dir.file("short.json", recording(&frames)).display().to_string();
+    for study in [&quick[..], &["eval", "sweep", "--users", "1", "--trials", "1"][..]] {
+        let e = cli_error(&[study, &["--noise-from", &short]].concat());
+        names(e, &[&short, "no hand is tracked for 1 s or more"]);
+    }
+    // Scales out of range are usage errors naming the option.
+    let e = usage_error(&["eval", "accuracy", "--noise=-1"]);
+    names(e, &["'--noise <SCALE>'", "expected a finite scale ≥ 0, got -1"]);
+    let e = usage_error(&["eval", "sweep", "--noise", "0,nan"]);
+    names(e, &["--noise", "got nan"]);
+    let e = usage_error(&["eval", "ablation", "--perception", "inf"]);
+    names(e, &["'--perception <SCALE>'", "got inf"]);
+    let e = usage_error(&["eval", "accuracy", "--strategy", "throw"]);
+    names(e, &["unknown strategy \"throw\": expected lift or slide"]);
+}
+
+#[test]
+fn the_library_refuses_study_options_out_of_range_naming_them() {
+    use coulomb_hands::eval::sweep::{SweepOptions, sweep};
+    use coulomb_hands::eval::{AccuracyOptions, accuracy};
+    let bad = AccuracyOptions { noise: f32::NAN, ..AccuracyOptions::default() };
+    names(accuracy(&bad, &mut |_, _| {}).unwrap_err(), &["study: noise: ", "got NaN"]);
+    let bad = AccuracyOptions { strategies: Vec::new(), ..AccuracyOptions::default() };
+    names(accuracy(&bad, &mut |_, _| {}).unwrap_err(), &["study: strategy: ", "at least one"]);
+    let bad = SweepOptions { noise: vec![0.5, -2.0], ..SweepOptions::default() };
+    names(sweep(&bad, &mut |_, _| {}).unwrap_err(), &["study: noise: ", "got -2"]);
+}

@@ -134,6 +134,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
     // A method that completed no trial has no mean: serde_json writes null.
     let method = |name: &str, errors_mm: Vec<f64>, mean_mm: f64| MethodResult {
         method: name.into(),
+        strategy: Some("slide".into()),
         errors_mm,
         mean_mm,
         sd_mm: mean_mm,
@@ -142,11 +143,14 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         times_s: Vec::new(),
         failed: 0,
         drops: 1,
+        held_across_mm: Some(-0.4),
     };
     let study = AccuracyStudy {
         users: 2,
         trials: 5,
         seed: 7,
+        noise: Some(0.5),
+        perception: Some(1.0),
         methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
         thesis: vec![ThesisResult {
             method: "coulomb".into(),
@@ -158,6 +162,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
     let text = serde_json::to_string(&study).unwrap();
     let read: report::AccuracyStudy = serde_json::from_str(&text).unwrap();
     assert_eq!((read.users, read.trials, read.seed), (2, 5, 7));
+    assert_eq!((read.noise, read.methods[0].strategy.as_deref()), (Some(0.5), Some("slide")));
     assert_eq!(
         (read.methods[0].errors_mm.as_slice(), read.methods[0].mean_mm),
         (&[1.0, 3.0][..], 2.0)
@@ -195,14 +200,19 @@ fn a_plain_report_runs_the_study_and_the_bench_itself() {
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.ends_with("accuracy: run, bench: run\n"), "{stdout}");
     let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
-    assert!(!page.contains("class=\"absent\""), "a section says how to produce it");
+    // Only the sweep and the ablation, which it does not run, are absent.
+    assert_eq!(page.matches("class=\"absent\"").count(), 2, "a section says how to produce it");
+    assert!(page.contains("eval sweep --json &gt; sweep.json"));
     assert!(page.contains(" build): 1 synthetic users × 1 trials, seed 1, methods coulomb,"));
     assert!(page.contains(" build): 20 timed steps per figure; the reference scene with 16"));
     // Every method's one trial, completed with an error on the board or
     // counted as failed.
     let diagonal_mm = SQUARES as f64 * SQUARE as f64 * 2f64.sqrt() * 1e3;
-    for method in ["coulomb", "thesis", "kinematic", "heuristic"] {
-        let cells = row(&page, method);
+    let rows = ["coulomb", "thesis", "kinematic", "heuristic"]
+        .into_iter()
+        .flat_map(|m| ["lift", "slide"].map(|s| format!("{m} {s}")));
+    for method in rows {
+        let cells = row(&page, &method);
         let count = |i: usize| cells[i].parse::<usize>().expect("a count");
         assert_eq!(count(1) + count(5), 1, "{method}: {cells:?}");
         if count(1) == 0 {
@@ -244,7 +254,43 @@ fn no_accuracy_and_no_bench_leave_them_out() {
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.ends_with("accuracy: skipped, bench: skipped\n"), "{stdout}");
     let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
-    assert_eq!(page.matches("class=\"absent\"").count(), 2);
+    assert_eq!(page.matches("class=\"absent\"").count(), 4);
     assert!(page.contains("--no-accuracy") && page.contains("--no-bench"));
     assert!(!page.contains("synthetic users ×") && !page.contains("tower awake"));
+}
+
+#[test]
+fn the_sweep_and_the_ablation_come_from_their_files() {
+    let dir = Scratch::new("report-studies");
+    let tiny = ["--users", "1", "--trials", "1", "--strategy", "lift", "--json"];
+    let (code, sweep, stderr) = run(&[
+        &["eval", "sweep", "--seeds", "4", "--noise", "0,1", "--method", "kinematic"][..],
+        &tiny,
+    ]
+    .concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    let (code, ablation, stderr) = run(&[&["eval", "ablation"][..], &tiny].concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    let sweep_file = dir.file("sweep.json", &sweep).display().to_string();
+    let ablation_file = dir.file("ablation.json", &ablation).display().to_string();
+    let out = dir.text("out");
+    let quick = ["--no-accuracy", "--no-bench", "--scenarios", "push", "--replays"];
+    let args = [&["report", "--out", &out][..], &quick, &["data/leap/pinch.json.lz"]].concat();
+    let with = [&args[..], &["--sweep", &sweep_file, "--ablation", &ablation_file]].concat();
+    let (code, _, stderr) = run(&with);
+    assert_eq!(code, Some(0), "{stderr}");
+    let page = std::fs::read_to_string(dir.path("out/index.html")).unwrap();
+    // Only the accuracy study and the bench are absent; the sweep has a
+    // plot (one strategy) and a row per noise strength.
+    assert_eq!(page.matches("class=\"absent\"").count(), 2);
+    for noise in ["×0", "×1"] {
+        let row = format!("<tr><td>kinematic</td><td>lift</td><td class=\"num\">{noise}</td>");
+        assert!(page.contains(&row), "no sweep row for noise {noise}");
+    }
+    assert!(page.contains("Placement error, lift") && page.contains("+ contact damper"));
+    assert!(page.contains(&format!("{sweep_file}, written by coulomb-hands eval sweep --json")));
+    // A sweep file that is not one is an error naming it, before any work.
+    let bad = dir.file("bad.json", r#"{"users": 1, "rows": "none"}"#).display().to_string();
+    let e = cli_error(&[&args[..], &["--sweep", &bad]].concat());
+    names(e, &[&bad, "line 1 column"]);
 }

@@ -27,6 +27,7 @@ fn thumb_against(fingers: &[Finger], at: Vec3, h: f32) -> Vec<Pad> {
 }
 
 const THREE: [Finger; 3] = [Finger::Index, Finger::Middle, Finger::Ring];
+const THUMB: Bone = Bone::Finger(Finger::Thumb, coulomb_hands::Phalanx::Distal);
 
 /// How a dropped box fell: its fastest horizontal speed (m/s) and how far
 /// it moved sideways (m) from the first pad's opening until it had fallen
@@ -132,15 +133,16 @@ fn a_side_that_lets_go_first_leaves_the_other_to_push_as_a_fingertip_would() {
             .abs()
             < 1e-3
     );
-    let thumb = |p: &Pad| p.bone == Bone::Finger(Finger::Thumb, coulomb_hands::Phalanx::Distal);
-    let fingers = |p: &Pad| !thumb(p);
-    let cases: [(&str, f32, f32, f32, f32, &dyn Fn(&Pad) -> bool); 4] = [
-        ("thumb 50 ms early", 0.05, 0.25, 0.04, 0.003, &thumb),
-        ("fingers 20 ms early", 0.02, 0.09, 0.15, 0.0042, &fingers),
-        ("thumb 35 ms early, slowly", 0.035, 0.04, 0.025, 0.0033, &thumb),
-        ("fingers 50 ms early, fast", 0.05, 0.3, 0.06, 0.0025, &fingers),
+    // (what, how long the first side leads (s), how fast the pads open
+    // (m/s), the box's mass (kg), the pads' depth (m), the thumb first?)
+    let cases = [
+        ("thumb 50 ms early", 0.05, 0.25, 0.04, 0.003, true),
+        ("fingers 20 ms early", 0.02, 0.09, 0.15, 0.0042, false),
+        ("thumb 35 ms early, slowly", 0.035, 0.04, 0.025, 0.0033, true),
+        ("fingers 50 ms early, fast", 0.05, 0.3, 0.06, 0.0025, false),
     ];
-    for (name, lead, speed, mass, depth, first) in cases {
+    for (name, lead, speed, mass, depth, thumb_first) in cases {
+        let first = |p: &Pad| (p.bone == THUMB) == thumb_first;
         let gamma = 400.0;
         // Either side of a thumb against three fingers presses like 1.5 pads.
         let side = gamma * grip::side_count(3.0, 1.0);

@@ -170,6 +170,8 @@ impl ChessboardTask {
                 users: 0,
                 trials: 0,
                 seed: self.options.seed,
+                noise: None,
+                perception: None,
                 methods: Vec::new(),
                 thesis: thesis_table(),
             },

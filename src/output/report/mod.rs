@@ -1,7 +1,9 @@
 //! The HTML report of `coulomb-hands report`: one self-contained page
 //! (inline CSS and SVG plots, nothing loaded from anywhere) with the
 //! placement-accuracy study (thesis Table 5.2), the step-time benchmark
-//! (Fig. 5.6), the shipped scenarios and the bundled replays.
+//! (Fig. 5.6), the shipped scenarios, the bundled replays, and the
+//! placement study swept over tracking noise and the thesis's law given
+//! its departures back one at a time.
 //!
 //! [`html`] is a pure function from a [`ReportData`] to the page's text.
 //! Every section is optional: a missing one says how to produce it. The
@@ -15,10 +17,13 @@
 
 mod page;
 mod plots;
+mod study;
+mod study_page;
 #[cfg(test)]
 mod tests;
 
 pub use page::html;
+pub use study::{Ablation, AblationRow, Estimate, NoiseSummary, SweepRow, SweepStudy};
 
 use crate::file_error::FileError;
 use serde::{Deserialize, Deserializer, Serialize};
@@ -31,6 +36,10 @@ pub struct ReportData {
     pub header: Header,
     /// The placement-accuracy study (`eval accuracy --json`).
     pub accuracy: Option<Sourced<AccuracyStudy>>,
+    /// The placement study swept over tracking noise (`eval sweep --json`).
+    pub sweep: Option<Sourced<SweepStudy>>,
+    /// The thesis's law given its departures back (`eval ablation --json`).
+    pub ablation: Option<Sourced<Ablation>>,
     /// The step-time benchmark (`bench --json`).
     pub bench: Option<Sourced<BenchReport>>,
     /// The scenarios that ran.
@@ -73,7 +82,14 @@ pub struct AccuracyStudy {
     pub trials: usize,
     /// The study's random seed.
     pub seed: u64,
-    /// One result per method.
+    /// Tracking noise, times the bundled recordings' (absent from files
+    /// written before the study had it: jitter of 0.2–1.2 mm then).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub noise: Option<f32>,
+    /// The users' glance errors, times the display's (absent: exact).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub perception: Option<f32>,
+    /// One result per method (and strategy).
     pub methods: Vec<MethodResult>,
     /// The thesis's Table 5.2, as the study compares with it.
     pub thesis: Vec<ThesisResult>,
@@ -84,6 +100,10 @@ pub struct AccuracyStudy {
 pub struct MethodResult {
     /// `coulomb`, `thesis`, `kinematic` or `heuristic`.
     pub method: String,
+    /// How the users moved the cube: `lift` or `slide` (absent for a
+    /// person's row, and from files written before the study had both).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub strategy: Option<String>,
     /// Placement error of each completed trial (mm).
     pub errors_mm: Vec<f64>,
     /// Mean placement error (mm); `null` reads as not a number.
@@ -106,6 +126,10 @@ pub struct MethodResult {
     pub failed: usize,
     /// Accidental drops.
     pub drops: usize,
+    /// Where the cube sat across the grip as the hands began to open on
+    /// it, on average (mm, from the grip's centre towards the fingers).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub held_across_mm: Option<f64>,
 }
 
 /// One row of the thesis's Table 5.2.
@@ -291,6 +315,16 @@ pub struct ReplayObject {
     pub max_speed_m_s: f64,
 }
 
+impl MethodResult {
+    /// The row's name: its method, and its strategy if it has one.
+    pub fn label(&self) -> String {
+        match &self.strategy {
+            Some(s) => format!("{} {s}", self.method),
+            None => self.method.clone(),
+        }
+    }
+}
+
 impl AccuracyStudy {
     /// Reads `eval accuracy --json` output; errors name the file, the line
     /// and what is wrong.
@@ -312,7 +346,7 @@ fn load_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, FileError
 }
 
 /// A number, or `null` (how serde_json writes a NaN) as NaN.
-fn null_as_nan<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+pub(crate) fn null_as_nan<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
 }
 

@@ -2,6 +2,7 @@
 //! with inline CSS and SVG, and nothing loaded from elsewhere.
 
 use super::plots;
+use super::study_page::{self, ABLATION_COMMAND, SWEEP_COMMAND};
 use super::{
     AccuracyStudy, BenchReport, Header, ReplayRun, ReportData, ScenarioRun, Sourced, StepTimes,
     THESIS_FIG_5_6, THESIS_TABLE_5_2, Verdict, thesis_name,
@@ -9,15 +10,18 @@ use super::{
 use std::fmt::Write;
 
 /// The sections' headings, in page order.
-pub const SECTIONS: [&str; 4] = [
+pub const SECTIONS: [&str; 6] = [
     "1. Placement accuracy (thesis Table 5.2)",
-    "2. Performance (thesis Fig. 5.6)",
-    "3. Scenarios",
-    "4. Replays",
+    "2. Placement under tracking noise",
+    "3. The thesis's law, departure by departure",
+    "4. Performance (thesis Fig. 5.6)",
+    "5. Scenarios",
+    "6. Replays",
 ];
 
 /// The sections' anchors, in page order.
-const SECTION_IDS: [&str; 4] = ["accuracy", "performance", "scenarios", "replays"];
+const SECTION_IDS: [&str; 6] =
+    ["accuracy", "noise", "ablation", "performance", "scenarios", "replays"];
 
 /// The command that writes the accuracy study's JSON.
 pub const ACCURACY_COMMAND: &str = "coulomb-hands eval accuracy --json > accuracy.json";
@@ -65,15 +69,24 @@ pub fn html(data: &ReportData) -> String {
             .collect();
         table(p, &["method", "thesis: mean ± sd / median (mm)"], &rows);
     });
-    section(&mut p, 1, data.bench.as_ref(), performance, |p| {
+    section(&mut p, 1, data.sweep.as_ref(), study_page::sweep, |p| {
+        let why = "the study was not swept over tracking noise (it takes minutes).";
+        let how = ("", SWEEP_COMMAND, "--sweep sweep.json");
+        absent(p, why, Some(how));
+    });
+    section(&mut p, 2, data.ablation.as_ref(), study_page::ablation, |p| {
+        let how = ("", ABLATION_COMMAND, "--ablation ablation.json");
+        absent(p, "the ablation was not run.", Some(how));
+    });
+    section(&mut p, 3, data.bench.as_ref(), performance, |p| {
         let how = ("--no-bench", BENCH_COMMAND, "--bench bench.json");
         absent(p, "the benchmark was left out.", Some(how));
         let _ = writeln!(p, "<p>{}</p>", escape(&thesis_fig_5_6()));
     });
-    section(&mut p, 2, data.scenarios.as_ref(), scenarios, |p| {
+    section(&mut p, 4, data.scenarios.as_ref(), scenarios, |p| {
         absent(p, "no scenarios were run.", None);
     });
-    section(&mut p, 3, data.replays.as_ref(), replays, |p| {
+    section(&mut p, 5, data.replays.as_ref(), replays, |p| {
         absent(p, "no recordings were replayed.", None);
     });
     p.push_str("</body>\n</html>\n");
@@ -118,7 +131,7 @@ fn verdict_class(passed: bool) -> (&'static str, &'static str) {
 
 /// A table: `head` cells (none: no head row), then rows of cells already in HTML (`num`
 /// cells are right-aligned when they start with `#`).
-fn table(p: &mut String, head: &[&str], rows: &[Vec<String>]) {
+pub(super) fn table(p: &mut String, head: &[&str], rows: &[Vec<String>]) {
     p.push_str("<table>\n");
     if !head.is_empty() {
         p.push_str("<tr>");
@@ -173,20 +186,32 @@ fn section<T>(
 /// command and option that give it from a file.
 fn absent(p: &mut String, why: &str, how: Option<(&str, &str, &str)>) {
     let _ = write!(p, "<p class=\"absent\">Not in this report: {}", escape(why));
-    if let Some((skip, command, option)) = how {
-        let _ = write!(
-            p,
-            " Run <code>coulomb-hands report</code> without <code>{}</code>, or produce it \
-             with <code>{}</code> and pass <code>{}</code>.",
-            escape(skip),
-            escape(command),
-            escape(option)
-        );
+    match how {
+        Some(("", command, option)) => {
+            let _ = write!(
+                p,
+                " Produce it with <code>{}</code> and pass <code>{}</code> to \
+                 <code>coulomb-hands report</code>.",
+                escape(command),
+                escape(option)
+            );
+        }
+        Some((skip, command, option)) => {
+            let _ = write!(
+                p,
+                " Run <code>coulomb-hands report</code> without <code>{}</code>, or produce \
+                 it with <code>{}</code> and pass <code>{}</code>.",
+                escape(skip),
+                escape(command),
+                escape(option)
+            );
+        }
+        None => {}
     }
     p.push_str("</p>\n");
 }
 
-fn plot(p: &mut String, svg: &str, caption: &str) {
+pub(super) fn plot(p: &mut String, svg: &str, caption: &str) {
     plot_with_legend(p, svg, "", caption);
 }
 
@@ -211,9 +236,11 @@ fn header(p: &mut String, data: &ReportData) {
     cells.push(vec!["command".into(), format!("<code>{}</code>", escape(command))]);
     let sources = [
         (SECTIONS[0], data.accuracy.as_ref().map(|s| &s.source)),
-        (SECTIONS[1], data.bench.as_ref().map(|s| &s.source)),
-        (SECTIONS[2], data.scenarios.as_ref().map(|s| &s.source)),
-        (SECTIONS[3], data.replays.as_ref().map(|s| &s.source)),
+        (SECTIONS[1], data.sweep.as_ref().map(|s| &s.source)),
+        (SECTIONS[2], data.ablation.as_ref().map(|s| &s.source)),
+        (SECTIONS[3], data.bench.as_ref().map(|s| &s.source)),
+        (SECTIONS[4], data.scenarios.as_ref().map(|s| &s.source)),
+        (SECTIONS[5], data.replays.as_ref().map(|s| &s.source)),
     ];
     for (i, (name, source)) in sources.iter().enumerate() {
         let id = SECTION_IDS[i];
@@ -250,8 +277,18 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
     let _ = writeln!(
         p,
         "<p>{} synthetic users × {} trials per method, seed {}: a cube moved from a start \
-         square to a target square of a chessboard.</p>",
-        s.users, s.trials, s.seed
+         square to a target square of a chessboard, lifted and placed (<code>lift</code>) or \
+         slid over the board between the fingers (<code>slide</code>).{}</p>",
+        s.users,
+        s.trials,
+        s.seed,
+        match (s.noise, s.perception) {
+            (Some(n), Some(g)) => format!(
+                " Tracking noise ×{n} the bundled recordings' own; glance errors ×{g} those \
+                 of the thesis's headset."
+            ),
+            _ => String::new(),
+        }
     );
     if s.methods.iter().any(|m| m.method.ends_with(')')) {
         p.push_str(
@@ -270,7 +307,7 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
         .iter()
         .map(|m| {
             vec![
-                escape(&m.method),
+                escape(&m.label()),
                 format!("#{}", m.errors_mm.len()),
                 stats(m.mean_mm, m.sd_mm, m.median_mm),
                 thesis_cell(&m.method, find(&m.method)),

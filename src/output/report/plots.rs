@@ -10,8 +10,8 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Drawn = Result<(), Box<dyn std::error::Error>>;
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+pub(super) type Drawn = Result<(), Box<dyn std::error::Error>>;
 type Chart<'a, X, Y> = ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>;
 
 const FONT: &str = "sans-serif";
@@ -23,7 +23,7 @@ const PURPLE: RGBColor = RGBColor(148, 103, 189);
 const GREY: RGBColor = RGBColor(127, 127, 127);
 const BROWN: RGBColor = RGBColor(140, 86, 75);
 /// Line colours, in order.
-const PALETTE: [RGBColor; 6] = [BLUE, ORANGE, GREEN, RED, PURPLE, BROWN];
+pub(super) const PALETTE: [RGBColor; 6] = [BLUE, ORANGE, GREEN, RED, PURPLE, BROWN];
 /// The three parts of a step: interaction layer, rapier, full step.
 const PARTS: [(&str, RGBColor); 3] =
     [("interaction layer", BLUE), ("rapier step", ORANGE), ("full step", GREEN)];
@@ -35,7 +35,7 @@ const MAX_POINTS: usize = 600;
 
 /// Draws with `draw` on a `size` SVG canvas; the SVG text, or a paragraph
 /// with the error.
-fn svg(size: (u32, u32), draw: impl FnOnce(&Area) -> Drawn) -> String {
+pub(super) fn svg(size: (u32, u32), draw: impl FnOnce(&Area) -> Drawn) -> String {
     let mut text = String::new();
     let drawn = {
         let root = SVGBackend::with_string(&mut text, size).into_drawing_area();
@@ -58,7 +58,7 @@ fn svg(size: (u32, u32), draw: impl FnOnce(&Area) -> Drawn) -> String {
 const LARGEST: f64 = 1e12;
 
 /// Whether `v` is finite and at most [`LARGEST`] in size.
-fn plottable(v: f64) -> bool {
+pub(super) fn plottable(v: f64) -> bool {
     v.abs() <= LARGEST
 }
 
@@ -92,7 +92,7 @@ fn quantile(s: &[f64], p: f64) -> f64 {
 }
 
 /// A tick label: up to three decimals, without trailing zeros.
-fn tick(v: &f64) -> String {
+pub(super) fn tick(v: &f64) -> String {
     let text = format!("{v:.3}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" { "0".into() } else { text.into() }
@@ -107,12 +107,12 @@ fn category(names: &[&str], x: f64) -> String {
 }
 
 /// Text in the plots' font.
-fn font(size: u32) -> TextStyle<'static> {
+pub(super) fn font(size: u32) -> TextStyle<'static> {
     (FONT, size).into_font().into()
 }
 
 /// A chart on `area` with a caption and room for axis labels.
-fn chart<'a, X: AsRangedCoord, Y: AsRangedCoord>(
+pub(super) fn chart<'a, X: AsRangedCoord, Y: AsRangedCoord>(
     area: &Area<'a>,
     caption: &str,
     x: X,
@@ -155,7 +155,7 @@ where
 }
 
 /// The legend of `chart`'s labelled series.
-fn legend_box<'a, CT: CoordTranslate>(
+pub(super) fn legend_box<'a, CT: CoordTranslate>(
     chart: &mut ChartContext<'a, SVGBackend<'a>, CT>,
     position: SeriesLabelPosition,
 ) -> Drawn {
@@ -174,7 +174,8 @@ fn legend_box<'a, CT: CoordTranslate>(
 /// and the thesis's mean ± sd and median beside it where it has them.
 /// `thesis` is `(method, mean, sd, median)` in mm.
 pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f64)]) -> String {
-    let mut names: Vec<&str> = methods.iter().map(|m| m.method.as_str()).collect();
+    let labels: Vec<String> = methods.iter().map(MethodResult::label).collect();
+    let mut names: Vec<&str> = labels.iter().map(String::as_str).collect();
     names.extend(
         thesis.iter().map(|t| t.0.as_str()).filter(|t| !methods.iter().any(|m| m.method == *t)),
     );
@@ -202,7 +203,9 @@ pub(super) fn placement(methods: &[MethodResult], thesis: &[(String, f64, f64, f
             draw_box(&mut chart, i as f64 - 0.17, e, floor)?;
         }
         for (method, mean, sd, median) in thesis {
-            let Some(i) = names.iter().position(|n| n == method) else { continue };
+            // Beside the method's first row, or its own column.
+            let row = methods.iter().position(|m| m.method == *method);
+            let Some(i) = row.or_else(|| names.iter().position(|n| n == method)) else { continue };
             if ![mean, sd, median].iter().all(|v| plottable(**v)) {
                 continue;
             }

@@ -2,6 +2,7 @@
 //! and the two JSON inputs.
 
 use super::page::{ACCURACY_COMMAND, BENCH_COMMAND, SECTIONS};
+use super::study_page::{ABLATION_COMMAND, SWEEP_COMMAND};
 use super::*;
 
 /// The thesis's Table 5.2, as the page prints it.
@@ -45,6 +46,38 @@ const BENCH_JSON: &str = r#"{"sweep":[
    "awake":{"interaction_us":18.5,"rapier_us":160.0,"full_us":178.5},"settling_us":170.0},
  "mujoco":{"step_us":770.0,"settings":"pyramidal, Euler","ratio_awake":0.23,"ratio_asleep":0.05}}"#;
 
+/// A sweep of two methods, both strategies, two noise strengths, in the
+/// order `eval sweep` writes them (method by method, so the strategies
+/// interleave); one row with no completed trial.
+const SWEEP_JSON: &str = r#"{"users":2,"trials":3,"seeds":[1,2],"perception":1.0,
+ "noise":{"sources":["data/leap/grab.json.lz"],"rms_mm":0.72,"dropouts_per_s":0.7,
+   "dropout_ms":17.6},
+ "rows":[
+  {"method":"coulomb","strategy":"lift","noise":0.0,"trials":12,
+   "error_mm":{"value":1.9,"low":1.4,"high":2.4},"median_mm":1.7,
+   "time_s":{"value":9.1,"low":8.0,"high":10.2},"failed":{"value":0.0,"low":0.0,"high":0.24},
+   "drops":{"value":0.0,"low":0.0,"high":0.0},"held_across_mm":0.1},
+  {"method":"coulomb","strategy":"lift","noise":2.0,"trials":12,
+   "error_mm":{"value":2.6,"low":1.9,"high":3.3},"median_mm":2.2,
+   "time_s":{"value":10.1,"low":9.0,"high":11.2},"failed":{"value":0.08,"low":0.01,"high":0.35},
+   "drops":{"value":0.1,"low":-0.1,"high":0.3},"held_across_mm":0.3},
+  {"method":"thesis","strategy":"slide","noise":0.0,"trials":12,
+   "error_mm":{"value":null,"low":null,"high":null},"median_mm":null,
+   "time_s":{"value":null,"low":null,"high":null},"failed":{"value":1.0,"low":0.76,"high":1.0},
+   "drops":{"value":3.5,"low":2.0,"high":5.0},"held_across_mm":null},
+  {"method":"thesis","strategy":"lift","noise":0.0,"trials":12,
+   "error_mm":{"value":4.4,"low":3.0,"high":5.8},"median_mm":3.9,
+   "time_s":{"value":15.2,"low":13.0,"high":17.4},"failed":{"value":0.17,"low":0.05,"high":0.45},
+   "drops":{"value":0.5,"low":0.1,"high":0.9},"held_across_mm":6.5}]}"#;
+
+const ABLATION_JSON: &str = r#"{"users":3,"trials":5,"seed":1,"rows":[
+  {"config":"thesis as written","strategy":"lift","trials":15,"completed":4,
+   "failed":{"value":0.73,"low":0.48,"high":0.89},"drops":{"value":2.1,"low":1.2,"high":3.0},
+   "error_mm":{"value":5.5,"low":1.0,"high":10.0}},
+  {"config":"+ contact damper","strategy":"lift","trials":15,"completed":15,
+   "failed":{"value":0.0,"low":0.0,"high":0.2},"drops":{"value":0.0,"low":0.0,"high":0.0},
+   "error_mm":{"value":2.2,"low":1.6,"high":2.8}}]}"#;
+
 fn scenario(name: &str, objects: usize) -> ScenarioRun {
     let series = |k: usize| ObjectSeries {
         name: format!("block{k}"),
@@ -78,6 +111,14 @@ fn full() -> ReportData {
             source: sourced("accuracy.json"),
             data: serde_json::from_str(ACCURACY_JSON).unwrap(),
         }),
+        sweep: Some(Sourced {
+            source: sourced("sweep.json"),
+            data: serde_json::from_str(SWEEP_JSON).unwrap(),
+        }),
+        ablation: Some(Sourced {
+            source: sourced("ablation.json"),
+            data: serde_json::from_str(ABLATION_JSON).unwrap(),
+        }),
         bench: Some(Sourced {
             source: sourced("bench.json"),
             data: serde_json::from_str(BENCH_JSON).unwrap(),
@@ -106,10 +147,11 @@ fn with_every_section_absent_the_page_says_how_to_make_them() {
     for text in THESIS_NUMBERS.iter().chain(&["0.6 ms at 6 bones, 1.5 ms at 32 bones"]) {
         assert!(page.contains(text), "{text}");
     }
-    for command in [ACCURACY_COMMAND, BENCH_COMMAND] {
+    for command in [ACCURACY_COMMAND, BENCH_COMMAND, SWEEP_COMMAND, ABLATION_COMMAND] {
         assert!(page.contains(&page::escape(command)), "{command}");
     }
     assert!(page.contains("--accuracy accuracy.json") && page.contains("--bench bench.json"));
+    assert!(page.contains("--sweep sweep.json") && page.contains("--ablation ablation.json"));
     assert_self_contained(&page);
 }
 
@@ -119,8 +161,9 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     for heading in SECTIONS {
         assert!(page.contains(&page::escape(heading)), "{heading}");
     }
-    // Accuracy 1, performance 3 (linear, log, reference), one per scenario.
-    assert_eq!(svgs(&page), 1 + 3 + 2);
+    // Accuracy 1, noise 2 (lift, slide), performance 3 (linear, log,
+    // reference), one per scenario.
+    assert_eq!(svgs(&page), 1 + 2 + 3 + 2);
     for text in THESIS_NUMBERS {
         assert!(page.contains(text), "{text}");
     }
@@ -134,6 +177,8 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     assert!(page.contains("pinch.json.lz") && page.contains("No hand closes"));
     assert!(page.contains("lifted (m)") && page.contains("&gt;= 0.18"));
     assert!(page.contains("--out &#39;a b&#39;"));
+    assert!(page.contains("2.6 [1.9, 3.3]") && page.contains("+ contact damper"));
+    assert!(page.contains("0.72 mm") && page.contains("— [—, —]"), "the sweep's numbers");
     assert_self_contained(&page);
 }
 
@@ -156,17 +201,22 @@ fn bad_numbers_and_empty_data_neither_panic_nor_lose_plots() {
     runs[0].objects[0].height_m = vec![f32::NAN; 3];
     runs[1].objects.clear();
     runs[1].error = Some("the world rejected a call".into());
+    let sweep = &mut data.sweep.as_mut().unwrap().data;
+    sweep.rows[0].error_mm = Estimate { value: f64::MAX, low: f64::NAN, high: f64::INFINITY };
+    sweep.rows[1].noise = f32::NAN;
     let page = html(&data);
-    assert_eq!(svgs(&page), 6, "{}", page.matches("could not be drawn").count());
+    assert_eq!(svgs(&page), 8, "{}", page.matches("could not be drawn").count());
     assert!(page.contains("The run stopped: the world rejected a call"));
     // With no thesis rows in the study, the published ones are shown.
     assert!(THESIS_NUMBERS.iter().all(|t| page.contains(t)));
     let huge =
         ThesisResult { method: "coulomb".into(), mean_mm: f64::MAX, sd_mm: 1.0, median_mm: 1.0 };
     data.accuracy.as_mut().unwrap().data.thesis = vec![huge];
-    assert_eq!(svgs(&html(&data)), 6);
+    assert_eq!(svgs(&html(&data)), 8);
     data.bench.as_mut().unwrap().data.sweep.clear();
     data.accuracy.as_mut().unwrap().data.methods.clear();
+    data.sweep.as_mut().unwrap().data.rows.clear();
+    // No rows: no strategies to plot.
     assert_eq!(svgs(&html(&data)), 6);
 }
 
@@ -188,6 +238,18 @@ fn the_two_json_inputs_deserialize_as_written() {
     let e = FileError::json::<AccuracyStudy>("a.json", r#"{"users": 6, "trials": "x"}"#);
     let e = e.unwrap_err().to_string();
     assert!(e.starts_with("a.json: line 1 column ") && e.contains("invalid type"), "{e}");
+}
+
+#[test]
+fn the_studies_json_reads_back() {
+    let sweep: SweepStudy = serde_json::from_str(SWEEP_JSON).unwrap();
+    assert_eq!(sweep.rows.len(), 4);
+    assert!(sweep.rows[2].error_mm.value.is_nan() && sweep.rows[2].held_across_mm.is_none());
+    assert_eq!(sweep.rows[1].failed.high, 0.35);
+    let ablation: Ablation = serde_json::from_str(ABLATION_JSON).unwrap();
+    assert_eq!(ablation.rows[1].completed, 15);
+    let e = FileError::json::<SweepStudy>("s.json", r#"{"users": 2, "rows": 3}"#);
+    assert!(e.unwrap_err().to_string().starts_with("s.json: line 1 column "));
 }
 
 #[test]

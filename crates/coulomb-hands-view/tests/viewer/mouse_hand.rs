@@ -163,15 +163,31 @@ fn the_hand_grasps_lifts_and_drops_the_cube() {
     hold(&mut app, &[KeyCode::KeyT], 0.4);
     hold_while(&mut app, &[KeyCode::KeyG], 1.0, |a| hand(a).curl[1] < 0.3);
     // Forward until the thumb's tip is just behind the cube's back face,
-    // sideways until thumb and index tips straddle its centre, then down
-    // until the thumb's tip is at the cube's mid-height.
+    // sideways until thumb and index tips straddle its centre, the fingers
+    // opened until their tips are in front of the cube, then down until
+    // the lowest tip is at the cube's mid-height.
     let back = -CUBE_HALF - 0.005;
     hold_while(&mut app, &[KeyCode::KeyW], 2.0, |a| tip(a, 0).z + tip_radius(a, 0) < back);
     let straddle = |a: &App| (tip(a, 0).x + tip(a, 1).x) / 2.0;
     let side = if straddle(&app) > 0.0 { KeyCode::KeyD } else { KeyCode::KeyA };
     let sign = straddle(&app).signum();
     hold_while(&mut app, &[side], 2.0, |a| straddle(a) * sign > 0.0);
-    hold_while(&mut app, &[KeyCode::KeyQ], 2.0, |a| tip(a, 0).y > CUBE_HALF);
+    // A person lowering a pinch round the cube sees to it that the index
+    // and middle fingertips clear its front face, opening the fingers a
+    // little until they do: lowered onto its top, they would press it
+    // into the table, not against the thumb.
+    let clear = |a: &App, f: usize| {
+        let bone = hand(a).sample().pose.fingers[f][2];
+        bone.a.z.min(bone.b.z) - bone.radius > CUBE_HALF + 0.003
+    };
+    let front = |a: &App| (1..3).all(|f| clear(a, f));
+    let mut opened = 0.0;
+    while !front(&app) && opened < 1.0 {
+        hold(&mut app, &[KeyCode::KeyH], 0.01);
+        opened += 0.01;
+    }
+    let lowest = |a: &App| (0..3).map(|f| tip(a, f).y).fold(f32::INFINITY, f32::min);
+    hold_while(&mut app, &[KeyCode::KeyQ], 2.0, |a| lowest(a) > CUBE_HALF);
     let bumped = cube(&app) - glam::Vec3::new(0.0, CUBE_HALF, 0.0);
     assert!(bumped.length() < 0.01, "still in place, give or take a bump: {bumped}");
     // Curl the index and middle fingers until the cube is squeezed against

@@ -24,7 +24,15 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
     // A synthetic study, as `eval accuracy --json` writes it: its row is kept.
     let synthetic = Trial { error: 0.0123, time: 7.5, failed: false, drops: 1 };
     let methods = vec![summarise("kinematic", &[synthetic])];
-    let study = AccuracyStudy { users: 2, trials: 3, seed: 9, methods, thesis: thesis_table() };
+    let study = AccuracyStudy {
+        users: 2,
+        trials: 3,
+        seed: 9,
+        noise: Some(1.0),
+        perception: Some(1.0),
+        methods,
+        thesis: thesis_table(),
+    };
     std::fs::write(&log, serde_json::to_string(&study).expect("JSON")).expect("written");
 
     // One square forward (+z), the cube turned 0.12 rad; then a second trial elsewhere.

@@ -1,0 +1,346 @@
+//! Tracking noise from real tracking, for the synthetic users.
+//!
+//! A tracker reports each joint of a hand with an error of its own, from
+//! frame to frame: the grip's depth and its aperture flicker, which one
+//! rigid shake of the whole hand would not do. So the noise is taken from
+//! real recordings: each joint's position less its smoothed track, in the
+//! palm's frame (and the palm's turn less its smoothed turn), frame by
+//! frame. A synthetic user's tracked hand replays those residuals, joint
+//! by joint, from a stretch of one recorded hand, scaled; and loses
+//! tracking as often, and for as long, as the recordings' hands did.
+//!
+//! The smoothing is a Gaussian of σ = 30 ms, a cut-off near 5 Hz: voluntary
+//! hand motion lies below it (Brooks 1990, "Telerobotic response
+//! requirements": most of its energy under 5 Hz), tracker jitter above.
+//! What a recording moves slower than that is the hand, not noise.
+
+use crate::file_error::FileError;
+use crate::hand::HandPose;
+use crate::input::playback::DEFAULT_GRACE;
+use crate::input::recording::{self, Recording};
+use crate::run::RunError;
+use glam::{Quat, Vec3};
+use rand::Rng;
+use std::path::Path;
+
+/// The Gaussian smoothing's σ (s): see the module doc.
+pub const SMOOTHING: f64 = 0.03;
+/// The shortest stretch of one tracked hand the noise is taken from (s).
+pub const MIN_TRACK: f64 = 1.0;
+/// A gap between two frames of a hand longer than this many times its
+/// median frame interval is a dropout.
+const DROPOUT_FACTOR: f64 = 2.5;
+/// Joints per hand: the palm's centre, then four per digit, thumb first,
+/// from the base of the proximal bone to the tip.
+pub const JOINTS: usize = 21;
+
+/// The bundled Leap Motion recordings (`data/leap`), built in, so the
+/// study needs no files.
+const BUNDLED: [(&str, &str); 4] = [
+    ("data/leap/grab.json.lz", include_str!("../../data/leap/grab.json.lz")),
+    ("data/leap/pinch.json.lz", include_str!("../../data/leap/pinch.json.lz")),
+    ("data/leap/pinch-57fps.json.lz", include_str!("../../data/leap/pinch-57fps.json.lz")),
+    ("data/leap/three-claps.json.lz", include_str!("../../data/leap/three-claps.json.lz")),
+];
+
+/// One frame's noise: each joint's offset from its smoothed track (m),
+/// and the palm's turn from its smoothed turn (a rotation vector, rad),
+/// both in the smoothed palm's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Residual {
+    /// Per joint, in the order of [`JOINTS`].
+    pub joints: [Vec3; JOINTS],
+    /// The palm's turn.
+    pub turn: Vec3,
+}
+
+impl Default for Residual {
+    /// No noise.
+    fn default() -> Self {
+        Residual::ZERO
+    }
+}
+
+impl Residual {
+    const ZERO: Residual = Residual { joints: [Vec3::ZERO; JOINTS], turn: Vec3::ZERO };
+
+    fn lerp(&self, other: &Residual, w: f32) -> Residual {
+        Residual {
+            joints: std::array::from_fn(|j| self.joints[j].lerp(other.joints[j], w)),
+            turn: self.turn.lerp(other.turn, w),
+        }
+    }
+
+    /// This noise, `scale` times as strong.
+    pub fn scaled(&self, scale: f32) -> Residual {
+        Residual { joints: self.joints.map(|j| j * scale), turn: self.turn * scale }
+    }
+
+    /// `pose` with this noise: each joint moved by its residual turned
+    /// into the pose's palm frame, the palm turned by its residual turn;
+    /// the capsules run through the moved joints.
+    pub fn apply(&self, pose: &HandPose) -> HandPose {
+        let frame = pose.palm.rotation;
+        let shift = |j: usize| frame * self.joints[j];
+        let mut out = pose.clone();
+        out.palm.center += shift(0);
+        out.palm.rotation = (frame * Quat::from_scaled_axis(self.turn)).normalize();
+        for (f, finger) in out.fingers.iter_mut().enumerate() {
+            let joint = |k: usize| 1 + 4 * f + k;
+            for (p, bone) in finger.iter_mut().enumerate() {
+                bone.a += shift(joint(p));
+                bone.b += shift(joint(p + 1));
+            }
+        }
+        out
+    }
+}
+
+/// The joints of a pose, in the order of [`JOINTS`] (world, m).
+fn joints(pose: &HandPose) -> [Vec3; JOINTS] {
+    let mut out = [pose.palm.center; JOINTS];
+    for (f, finger) in pose.fingers.iter().enumerate() {
+        out[1 + 4 * f] = finger[0].a;
+        for p in 0..3 {
+            out[2 + 4 * f + p] = finger[p].b;
+        }
+    }
+    out
+}
+
+/// The residuals of one recorded hand, frame by frame.
+#[derive(Debug, Clone)]
+struct ResidualTrack {
+    /// Frame times from the track's first (s).
+    times: Vec<f64>,
+    residuals: Vec<Residual>,
+}
+
+impl ResidualTrack {
+    fn duration(&self) -> f64 {
+        self.times.last().copied().unwrap_or(0.0)
+    }
+
+    /// The residual at `t` (s) from the track's start, interpolated, the
+    /// track replayed in a loop.
+    fn at(&self, t: f64) -> Residual {
+        let t = t.rem_euclid(self.duration().max(1e-9));
+        let after = self.times.partition_point(|&s| s <= t).min(self.times.len() - 1);
+        let before = after.saturating_sub(1);
+        let (t0, t1) = (self.times[before], self.times[after]);
+        let w = if t1 > t0 { ((t - t0) / (t1 - t0)).clamp(0.0, 1.0) as f32 } else { 0.0 };
+        self.residuals[before].lerp(&self.residuals[after], w)
+    }
+}
+
+/// Real tracking noise: residual tracks and the recordings' dropouts.
+#[derive(Debug, Clone)]
+pub struct TrackingNoise {
+    tracks: Vec<ResidualTrack>,
+    /// Dropouts per second of tracked hand.
+    pub dropout_rate: f64,
+    /// The length of each dropout seen (s).
+    pub dropout_lengths: Vec<f64>,
+    /// The recordings it was taken from.
+    pub sources: Vec<String>,
+    /// The residuals' rms over every joint, axis and frame (m).
+    pub rms: f32,
+}
+
+impl TrackingNoise {
+    /// The noise of the bundled Leap Motion recordings.
+    pub fn bundled() -> Result<TrackingNoise, RunError> {
+        let recordings = BUNDLED
+            .iter()
+            .map(|(name, text)| recording::parse(name, text, false))
+            .collect::<Result<Vec<_>, _>>()?;
+        TrackingNoise::from_recordings(&recordings)
+    }
+
+    /// The noise of the recordings at `paths` (any format `replay`
+    /// reads), or of the bundled ones if there are none.
+    pub fn load(paths: &[impl AsRef<Path>]) -> Result<TrackingNoise, RunError> {
+        if paths.is_empty() {
+            return TrackingNoise::bundled();
+        }
+        let recordings =
+            paths.iter().map(|p| recording::load(p.as_ref())).collect::<Result<Vec<_>, _>>()?;
+        TrackingNoise::from_recordings(&recordings)
+    }
+
+    /// The noise of `recordings`: every hand tracked for at least
+    /// [`MIN_TRACK`] gives a residual track. An error names a recording
+    /// none of whose hands does, or the first bad frame.
+    pub fn from_recordings(recordings: &[Recording]) -> Result<TrackingNoise, RunError> {
+        let mut noise = TrackingNoise {
+            tracks: Vec::new(),
+            dropout_rate: 0.0,
+            dropout_lengths: Vec::new(),
+            sources: Vec::new(),
+            rms: 0.0,
+        };
+        let mut tracked = 0.0;
+        for rec in recordings {
+            let playback = rec.playback(Vec3::ZERO, DEFAULT_GRACE)?;
+            let before = noise.tracks.len();
+            for track in &playback.tracks {
+                let samples = track.samples();
+                let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
+                let duration = times.last().unwrap_or(&0.0) - times.first().unwrap_or(&0.0);
+                if duration < MIN_TRACK {
+                    continue;
+                }
+                tracked += duration;
+                noise.dropout_lengths.extend(dropouts(&times));
+                let poses: Vec<&HandPose> = samples.iter().map(|s| &s.1.pose).collect();
+                noise.tracks.push(residual_track(&times, &poses));
+            }
+            if noise.tracks.len() == before {
+                let reason = format!(
+                    "no hand is tracked for {MIN_TRACK} s or more, so it has no noise to take"
+                );
+                return Err(FileError::new(&rec.source_name, reason).into());
+            }
+            noise.sources.push(rec.source_name.clone());
+        }
+        noise.dropout_rate = noise.dropout_lengths.len() as f64 / tracked.max(1e-9);
+        noise.rms = rms(&noise.tracks);
+        Ok(noise)
+    }
+
+    /// A fresh stream of this noise for one trial, from a random stretch
+    /// of a random recorded hand, `scale` times as strong and its dropouts
+    /// `scale` times as frequent.
+    pub fn stream(&self, scale: f32, rng: &mut impl Rng) -> NoiseStream<'_> {
+        let track = rng.random_range(0..self.tracks.len().max(1));
+        let offset = self.tracks.get(track).map_or(0.0, |t| rng.random_range(0.0..t.duration()));
+        NoiseStream { noise: self, track, offset, scale, dropout: None, next_drop: None }
+    }
+}
+
+/// The gaps of a track's frame times that are dropouts, each as the time
+/// lost beyond one frame interval (s).
+fn dropouts(times: &[f64]) -> Vec<f64> {
+    let mut intervals: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+    if intervals.is_empty() {
+        return Vec::new();
+    }
+    let gaps = intervals.clone();
+    intervals.sort_by(f64::total_cmp);
+    let median = intervals[intervals.len() / 2];
+    gaps.into_iter().filter(|&g| g > DROPOUT_FACTOR * median).map(|g| g - median).collect()
+}
+
+/// Each frame's residual from its Gaussian-smoothed neighbours.
+fn residual_track(times: &[f64], poses: &[&HandPose]) -> ResidualTrack {
+    let points: Vec<[Vec3; JOINTS]> = poses.iter().map(|p| joints(p)).collect();
+    let start = times[0];
+    let mut residuals = Vec::with_capacity(times.len());
+    for (k, &t) in times.iter().enumerate() {
+        let (mut weight, mut mean, mut turn) =
+            (0.0f32, [Vec3::ZERO; JOINTS], Quat::from_xyzw(0.0, 0.0, 0.0, 0.0));
+        let here = poses[k].palm.rotation;
+        let window = times.partition_point(|&s| s < t - 3.0 * SMOOTHING)
+            ..times.partition_point(|&s| s <= t + 3.0 * SMOOTHING);
+        for m in window {
+            let w = (-0.5 * ((times[m] - t) / SMOOTHING).powi(2)).exp() as f32;
+            weight += w;
+            for j in 0..JOINTS {
+                mean[j] += w * points[m][j];
+            }
+            let q = poses[m].palm.rotation;
+            turn += q * (w * q.dot(here).signum());
+        }
+        let smooth = turn.normalize();
+        let frame = smooth.inverse();
+        let joints = std::array::from_fn(|j| frame * (points[k][j] - mean[j] / weight));
+        let turn = (frame * here).to_scaled_axis();
+        residuals.push(Residual { joints, turn });
+    }
+    ResidualTrack { times: times.iter().map(|t| t - start).collect(), residuals }
+}
+
+/// The rms of every residual coordinate (m).
+fn rms(tracks: &[ResidualTrack]) -> f32 {
+    let (sum, n) = tracks.iter().flat_map(|t| &t.residuals).fold((0.0f64, 0usize), |(s, n), r| {
+        (s + r.joints.iter().map(|j| f64::from(j.length_squared())).sum::<f64>(), n + 3 * JOINTS)
+    });
+    if n == 0 { 0.0 } else { (sum / n as f64).sqrt() as f32 }
+}
+
+/// One trial's tracking noise, sampled on the physics clock.
+#[derive(Debug, Clone)]
+pub struct NoiseStream<'a> {
+    noise: &'a TrackingNoise,
+    track: usize,
+    offset: f64,
+    scale: f32,
+    /// The dropout under way: when it began and ends (s).
+    dropout: Option<(f64, f64)>,
+    /// When the next dropout begins (s), once drawn.
+    next_drop: Option<f64>,
+}
+
+/// What the tracker reports at one instant.
+// Returned by value once a physics step: a box would allocate each step.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Tracked {
+    /// A hand, with this noise on it.
+    Hand(Residual),
+    /// No new frame: the last report is held (a dropout within the
+    /// grace period, as a live feed holds a hand).
+    Held,
+    /// The hand is lost (a dropout past the grace period).
+    Lost,
+}
+
+impl NoiseStream<'_> {
+    /// The tracker's report at `t` (s), drawing dropouts from `rng`: they
+    /// begin at the recordings' rate (times the scale) and last as long as
+    /// one of theirs, drawn at random.
+    pub fn at(&mut self, t: f64, rng: &mut impl Rng) -> Tracked {
+        let rate = self.noise.dropout_rate * f64::from(self.scale);
+        if self.next_drop.is_none() && rate > 0.0 && self.dropout.is_none() {
+            let wait = -(1.0 - rng.random::<f64>()).ln() / rate;
+            self.next_drop = Some(t + wait);
+        }
+        if let Some(start) = self.next_drop.filter(|&s| s <= t) {
+            let lengths = &self.noise.dropout_lengths;
+            let length = lengths[rng.random_range(0..lengths.len())];
+            self.dropout = Some((start, start + length));
+            self.next_drop = None;
+        }
+        if let Some((start, end)) = self.dropout {
+            if t < end {
+                return if t - start <= DEFAULT_GRACE { Tracked::Held } else { Tracked::Lost };
+            }
+            self.dropout = None;
+        }
+        match self.noise.tracks.get(self.track) {
+            Some(track) if self.scale > 0.0 => {
+                Tracked::Hand(track.at(self.offset + t).scaled(self.scale))
+            }
+            _ => Tracked::Hand(Residual::ZERO),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_bundled_recordings_give_millimetre_noise_on_every_joint() {
+        let noise = TrackingNoise::bundled().unwrap();
+        assert_eq!(noise.sources.len(), 4);
+        eprintln!(
+            "tracks {} rms {:.3} mm dropouts {:.2}/s {:?}",
+            noise.tracks.len(),
+            noise.rms * 1e3,
+            noise.dropout_rate,
+            noise.dropout_lengths
+        );
+        assert!(noise.rms > 5e-5 && noise.rms < 5e-3, "{}", noise.rms);
+    }
+}

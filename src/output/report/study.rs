@@ -1,0 +1,134 @@
+//! The data of the studies that go beyond Table 5.2: the placement study
+//! swept over tracking noise (`eval sweep --json`) and the thesis's law
+//! given its departures back one at a time (`eval ablation --json`), with
+//! their confidence intervals. `eval` builds them; the report shows them.
+
+use super::{load_json, null_as_nan};
+use crate::file_error::FileError;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// A mean with its 95 % confidence interval (Student's t, trials taken as
+/// independent), or a proportion with its Wilson interval.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Estimate {
+    /// The mean, or the proportion.
+    #[serde(deserialize_with = "null_as_nan")]
+    pub value: f64,
+    /// The interval's lower end.
+    #[serde(deserialize_with = "null_as_nan")]
+    pub low: f64,
+    /// The interval's upper end.
+    #[serde(deserialize_with = "null_as_nan")]
+    pub high: f64,
+}
+
+impl Estimate {
+    /// Not a number: the estimate of nothing.
+    pub const NONE: Estimate = Estimate { value: f64::NAN, low: f64::NAN, high: f64::NAN };
+}
+
+/// Where the noise came from and how strong it is at scale 1.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct NoiseSummary {
+    /// The recordings.
+    pub sources: Vec<String>,
+    /// The residuals' rms per joint and axis (mm).
+    pub rms_mm: f64,
+    /// Dropouts per second of tracked hand.
+    pub dropouts_per_s: f64,
+    /// Their mean length (ms).
+    pub dropout_ms: f64,
+}
+
+/// One method, strategy and noise strength, over every seed's trials.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepRow {
+    /// The method.
+    pub method: String,
+    /// `lift` or `slide`.
+    pub strategy: String,
+    /// The noise strength, times the recordings'.
+    pub noise: f32,
+    /// Trials run (over every seed).
+    pub trials: usize,
+    /// Placement error of the completed trials (mm).
+    pub error_mm: Estimate,
+    /// Its median (mm).
+    #[serde(deserialize_with = "null_as_nan")]
+    pub median_mm: f64,
+    /// Time of the completed trials (s).
+    pub time_s: Estimate,
+    /// The share of trials not completed.
+    pub failed: Estimate,
+    /// Drops per trial.
+    pub drops: Estimate,
+    /// Where the cube sat across the grip as the hand began to open on
+    /// it (mm, from the grip's centre towards the fingers), on average.
+    pub held_across_mm: Option<f64>,
+}
+
+/// `coulomb-hands eval sweep --json`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepStudy {
+    /// Users per seed.
+    pub users: usize,
+    /// Trials per user.
+    pub trials: usize,
+    /// The seeds.
+    pub seeds: Vec<u64>,
+    /// The glances' errors, times the display's.
+    pub perception: f32,
+    /// The noise at scale 1.
+    pub noise: NoiseSummary,
+    /// One row per method, strategy and noise strength.
+    pub rows: Vec<SweepRow>,
+}
+
+/// One configuration's outcome with one strategy.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AblationRow {
+    /// `thesis as written`, `+ <departure>`, or `coulomb (all of them)`.
+    pub config: String,
+    /// `lift` or `slide`.
+    pub strategy: String,
+    /// Trials run.
+    pub trials: usize,
+    /// Trials completed.
+    pub completed: usize,
+    /// The share of trials not completed.
+    pub failed: Estimate,
+    /// Drops per trial.
+    pub drops: Estimate,
+    /// Placement error of the completed trials (mm).
+    pub error_mm: Estimate,
+}
+
+/// `coulomb-hands eval ablation --json`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Ablation {
+    /// Synthetic users.
+    pub users: usize,
+    /// Trials per user.
+    pub trials: usize,
+    /// The seed.
+    pub seed: u64,
+    /// One row per configuration and strategy.
+    pub rows: Vec<AblationRow>,
+}
+
+impl SweepStudy {
+    /// Reads `eval sweep --json` output; errors name the file, the line and
+    /// what is wrong.
+    pub fn load(path: &Path) -> Result<SweepStudy, FileError> {
+        load_json(path)
+    }
+}
+
+impl Ablation {
+    /// Reads `eval ablation --json` output; errors name the file, the line
+    /// and what is wrong.
+    pub fn load(path: &Path) -> Result<Ablation, FileError> {
+        load_json(path)
+    }
+}
