@@ -1,13 +1,15 @@
 //! How the replay's settings fare on every closing of every bundled
 //! recording: γ fixed or automatic (Eq. 3.11), and the skin patch, each
 //! with four objects put at every closing. README's replay defaults were
-//! chosen from this table.
+//! chosen from this table. Only judged closings count (those held long
+//! enough, pressing the object, and settled: [`Hold::Judged`]).
 //!
 //! `cargo run --release --example replay_defaults`
 
 use coulomb_hands::contact::patch::PatchConfig;
 use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::{leap, playback::DEFAULT_GRACE, playback::Playback};
+use coulomb_hands::run::closing::Hold;
 use coulomb_hands::run::replay::{replay_closings, world_with_objects};
 use coulomb_hands::{GammaMode, InteractionConfig};
 
@@ -37,18 +39,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ("radii x2", wide),
     ];
     let gammas = [200.0, 400.0, 800.0].map(GammaMode::Fixed).into_iter().chain([GammaMode::Auto]);
-    println!("| γ | patch | closings held | released after opening |");
-    println!("|---|---|---|---|");
+    println!("| γ | patch | judged closings held | released after opening | not judged |");
+    println!("|---|---|---|---|---|");
     for gamma in gammas {
         for (patch_name, patch) in &patches {
-            let (mut closings, mut held, mut released) = (0, 0, 0);
+            let (mut judged, mut held, mut released, mut not) = (0, 0, 0, 0);
             for (playback, name) in playbacks.iter().zip(RECORDINGS) {
                 for object in OBJECTS {
                     let config = InteractionConfig { gamma, patch: *patch, ..Default::default() };
                     let (mut world, _) = world_with_objects(config, &[])?;
                     let summary =
                         replay_closings(name, playback, &mut world, object.parse()?, &mut [])?;
-                    closings += summary.closings.len();
+                    let (ok, rest): (Vec<_>, Vec<_>) =
+                        summary.closings.iter().partition(|c| c.hold == Hold::Judged);
+                    (judged, not) = (judged + ok.len(), not + rest.len());
                     held += summary.closings.iter().filter(|c| c.held()).count();
                     released +=
                         summary.closings.iter().filter(|c| c.released == Some(true)).count();
@@ -58,7 +62,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 GammaMode::Auto => "auto".to_string(),
                 GammaMode::Fixed(g) => format!("{g} N/m"),
             };
-            println!("| {gamma} | {patch_name} | {held} of {closings} | {released} |");
+            println!("| {gamma} | {patch_name} | {held} of {judged} | {released} | {not} |");
         }
     }
     Ok(())

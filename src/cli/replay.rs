@@ -106,13 +106,20 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
 
 /// One line per closing, and how many held and were let go.
 fn print_closings(closings: &[coulomb_hands::run::closing::ClosingVerdict]) {
+    use coulomb_hands::run::closing::Hold;
     if closings.is_empty() {
-        println!("closings: 0 (no hand closes: none halves its thumb-to-fingertip distance)");
+        println!(
+            "closings: 0 (no hand closes by its grab or pinch strength, its curl or its aperture)"
+        );
         return;
     }
     let held = closings.iter().filter(|c| c.held()).count();
     let released = closings.iter().filter(|c| c.released == Some(true)).count();
-    println!("closings: {} ({held} held, {released} released after opening)", closings.len());
+    let not = match closings.iter().filter(|c| c.hold != Hold::Judged).count() {
+        0 => String::new(),
+        n => format!(", {n} not judged"),
+    };
+    println!("closings: {} ({held} held, {released} released after opening{not})", closings.len());
     for c in closings {
         println!("  {c}");
     }

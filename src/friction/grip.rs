@@ -156,6 +156,26 @@ pub fn pad_damping_ratio(dissipation: f32) -> Option<f32> {
     Some(0.5 * (low + high))
 }
 
+/// How long a grip of stiffness `stiffness` (N/m) and damping ratio `zeta`
+/// takes to come to rest about where it holds a `mass` kg object (s): its
+/// 2 % settling time, 4 over its slowest decay rate (`ζω`, or
+/// `ω(ζ − √(ζ² − 1))` overdamped, with `ω = √(k/m)`; e.g. Ogata, *Modern
+/// Control Engineering*, §5.3), but at most one period `2π/ω`: a grip
+/// damped too little to settle rings, and its ringing is part of what it
+/// does with the object. `None` unless stiffness and mass are positive and
+/// finite.
+pub fn settling_time(stiffness: f32, mass: f32, zeta: f32) -> Option<f32> {
+    let valid = |x: f32| x.is_finite() && x > 0.0;
+    if !(valid(stiffness) && valid(mass)) {
+        return None;
+    }
+    let omega = (stiffness / mass).sqrt();
+    let z = zeta.max(0.0);
+    let decay = if z < 1.0 { z * omega } else { omega * (z - (z * z - 1.0).sqrt()) };
+    let period = std::f32::consts::TAU / omega;
+    Some(if decay > 0.0 { (4.0 / decay).min(period) } else { period })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -250,5 +270,25 @@ mod tests {
         assert_eq!(pad_damping_ratio(1.0), None);
         assert_eq!(pad_damping_ratio(-0.1), None);
         assert_eq!(pad_damping_ratio(f32::NAN), None);
+    }
+
+    #[test]
+    fn a_grip_settles_in_four_decay_times_or_rings_for_a_period() {
+        // 35 g in a 260 N/m grip: ω = 86.2 rad/s.
+        let omega = (260.0f32 / 0.035).sqrt();
+        let t = settling_time(260.0, 0.035, 0.76).unwrap();
+        assert!((t - 4.0 / (0.76 * omega)).abs() < 1e-6, "{t}");
+        // Underdamped below ζ = 2/π: a period.
+        let period = std::f32::consts::TAU / omega;
+        for zeta in [0.0, 0.3, 0.6] {
+            assert!((settling_time(260.0, 0.035, zeta).unwrap() - period).abs() < 1e-6);
+        }
+        // Overdamped: the slow pole; much overdamped, a period again.
+        let slow = omega * (1.05 - (1.05f32 * 1.05 - 1.0).sqrt());
+        assert!((settling_time(260.0, 0.035, 1.05).unwrap() - 4.0 / slow).abs() < 1e-5);
+        assert!((settling_time(260.0, 0.035, 9.0).unwrap() - period).abs() < 1e-6);
+        for (k, m) in [(0.0, 0.1), (100.0, 0.0), (f32::NAN, 0.1), (100.0, f32::INFINITY)] {
+            assert_eq!(settling_time(k, m, 0.5), None);
+        }
     }
 }

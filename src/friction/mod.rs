@@ -37,7 +37,7 @@ pub mod slip;
 pub use gamma::{MAX_PENETRATION_FRACTION, auto_gamma};
 pub use grip::{
     DepthSums, FINGERTIP_DISSIPATION, Sides, pad_damping_ratio, released_energy_fraction,
-    side_count, sides, virtual_finger_factor,
+    settling_time, side_count, sides, virtual_finger_factor,
 };
 pub use law::{
     inside_friction_cone, resolve, split_normal_tangential, spring_force, tangential_friction,

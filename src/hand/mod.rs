@@ -7,6 +7,7 @@
 
 use glam::{Quat, Vec3};
 
+mod curl;
 pub mod rig;
 
 /// Handle of a hand in an [`crate::InteractionWorld`].

@@ -5,6 +5,12 @@
 use super::{Finger, HandPose, Palm, Side};
 use glam::{Quat, Vec3};
 
+/// A finger's flexion in a fist (°) at its knuckle, middle and end joint:
+/// within each joint's active range (about 90°, 100–110° and 80–90°,
+/// American Academy of Orthopaedic Surgeons 1965), short of it as a relaxed
+/// fist is. [`HandPose::curl`] calls this flexion 1.
+pub const FIST_FLEXION_DEG: [f32; 3] = [70.0, 95.0, 65.0];
+
 /// Bone lengths and radii of a hand, in metres.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HandRig {
@@ -55,7 +61,7 @@ impl HandRig {
                 [0.033, 0.020, 0.018],
             ],
             radii: [0.0095, 0.0085, 0.0085, 0.008, 0.007],
-            full_curl: [70f32.to_radians(), 95f32.to_radians(), 65f32.to_radians()],
+            full_curl: FIST_FLEXION_DEG.map(f32::to_radians),
             thumb_full_curl: [40f32.to_radians(), 50f32.to_radians(), 70f32.to_radians()],
         }
     }

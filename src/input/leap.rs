@@ -224,8 +224,22 @@ fn unit(source: &str, index: usize, path: &str, v: Option<&Value>) -> Result<Vec
         .ok_or_else(|| err(source, Some(index), path, "zero-length direction"))
 }
 
-fn strength(v: Option<&Value>) -> Option<f32> {
-    v.and_then(Value::as_f64).filter(|x| x.is_finite()).map(|x| x.clamp(0.0, 1.0) as f32)
+/// A grab or pinch strength: absent or null when the tracker gives none,
+/// else a number in [0, 1] (Leap's scale); anything else is refused, since
+/// the replay finds closings from it.
+fn strength(
+    source: &str,
+    index: usize,
+    path: &str,
+    v: Option<&Value>,
+) -> Result<Option<f32>, InputError> {
+    let Some(v) = v.filter(|v| !v.is_null()) else { return Ok(None) };
+    let x =
+        v.as_f64().ok_or_else(|| err(source, Some(index), path, format!("not a number: {v}")))?;
+    if !(0.0..=1.0).contains(&x) {
+        return Err(err(source, Some(index), path, format!("must be in [0, 1], got {x}")));
+    }
+    Ok(Some(x as f32))
 }
 
 /// One frame object (format 0.1/1, or unpacked format 2, or a live
@@ -335,8 +349,8 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
                 .collect::<Option<Vec<Vec3>>>()
                 .and_then(|c| c.try_into().ok()),
             widths,
-            grab: strength(hand.get("grabStrength")),
-            pinch: strength(hand.get("pinchStrength")),
+            grab: strength(source, index, &path("grabStrength"), hand.get("grabStrength"))?,
+            pinch: strength(source, index, &path("pinchStrength"), hand.get("pinchStrength"))?,
         });
     }
     Ok(TrackingFrame { timestamp_us: timestamp, hands })
@@ -381,6 +395,25 @@ mod tests {
         assert_eq!((hand.id, hand.side), (7, Side::Right));
         assert_eq!(hand.joints[4][3], Vec3::new(40.0, 200.0, -125.0));
         assert_eq!(hand.grab, Some(0.25));
+    }
+
+    #[test]
+    fn strengths_out_of_range_are_refused_and_absent_ones_are_none() {
+        for (value, why) in [
+            (serde_json::json!(1.3), "must be in [0, 1], got 1.3"),
+            (serde_json::json!(-0.05), "must be in [0, 1], got -0.05"),
+            (serde_json::json!("NaN"), "not a number: \"NaN\""),
+        ] {
+            let mut bad = recording(1.0);
+            bad["frames"][0]["hands"][0]["pinchStrength"] = value;
+            let e = from_json("rec.json", &bad).unwrap_err().to_string();
+            assert_eq!(e, format!("rec.json: frame 0: hands[0].pinchStrength: {why}"));
+        }
+        let mut none = recording(1.0);
+        none["frames"][0]["hands"][0]["grabStrength"] = serde_json::Value::Null;
+        none["frames"][0]["hands"][0].as_object_mut().unwrap().remove("pinchStrength");
+        let hand = &from_json("rec.json", &none).unwrap().frames[0].hands[0];
+        assert_eq!((hand.grab, hand.pinch), (None, None));
     }
 
     #[test]

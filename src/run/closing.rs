@@ -2,12 +2,15 @@
 //! each closing grasps ([`super::grasp::find_grasps`]), held by a fixture
 //! until the hand grips it; then the replay judges, from physics alone,
 //! whether the closed hand held it, when and how far it slipped, and
-//! whether the hand let it go once it opened.
+//! whether the hand let it go once it opened. A closing too short to mean
+//! anything, or one whose hand never pressed its object, gets no verdict.
 
 use super::RunError;
 use super::drive::{Observer, StepView};
-use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
+use super::grasp::spans::Signals;
+use super::grasp::{GraspSite, MIN_HOLD, SAMPLE_STEP, find_grasps};
 use super::replay::{GraspObject, is_gripped, is_squeezed};
+use crate::friction::settling_time;
 use crate::input::playback::Playback;
 use crate::pipeline::{InteractionWorld, WorldError};
 use crate::scene::ObjectId;
@@ -18,16 +21,44 @@ use glam::{Quat, Vec3};
 /// of a second; in this time an object let go falls 1.2 m.
 pub const RELEASE_WINDOW: f64 = 0.5;
 
+/// Whether a closing was judged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Hold {
+    /// The hand held for at least [`MIN_HOLD`] and pressed the object:
+    /// held or slipped, and released or not, are judged.
+    Judged,
+    /// No signal kept the hand closed for [`MIN_HOLD`]: a twitch or a
+    /// flicker. No object is put there.
+    TooShort,
+    /// The hand stayed closed but never pressed the object (it closed
+    /// beside it, or short of it): nothing held it, so nothing is judged.
+    NeverPressed,
+    /// The hand opened before its grip on the object had settled (the
+    /// object got free of its fixture too late in the hold): too soon to
+    /// say where the grip held it.
+    Unsettled,
+}
+
 /// What happened to the object at one closing of a hand.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ClosingVerdict {
-    /// The object's name in the world: `closing-1`, `closing-2` …
+    /// The object's name in the world: `closing-1`, `closing-2` … (a
+    /// closing too short to judge gets the name but no object).
     pub object: String,
     /// The tracker's id of the closing hand.
     pub hand: i64,
-    /// When the hand became three quarters closed, was most closed, began
-    /// to open ([`GraspSite::opening_at`]), and opened past three quarters
-    /// again (s).
+    /// The signals that found the closing: `grab`, `pinch` (the tracker's
+    /// strengths), `curl`, `aperture` (from the joints).
+    pub signals: Signals,
+    /// Whether it was judged, and if not, why.
+    pub hold: Hold,
+    /// How long the hand held: `opening_at − closing_at` (s).
+    pub hold_s: f64,
+    /// When the hand was closed, from `closing_at` to `opening_at`, the last
+    /// instant before it opened by the tracker's strengths or the curl,
+    /// whichever first ([`GraspSite`]); its most closed instant, where the
+    /// object sits, and when every signal had let it go (s).
     pub closing_at: f64,
     /// See `closing_at` (s).
     pub closed_at: f64,
@@ -44,9 +75,13 @@ pub struct ClosingVerdict {
     /// ([`is_gripped`]), or `None` if the hand had not gripped it by its
     /// most closed instant, when the fixture let go anyway.
     pub gripped_at: Option<f64>,
-    /// The largest distance the object moved in the palm's frame while
-    /// the hand stayed closed, from where the fixture let it go to
-    /// `opening_at` (m).
+    /// When the object's place in the hand is taken as the reference for
+    /// the drift (s): the grip's settling time ([`settling_time`], for the
+    /// object's γ and mass and the contacts' damping) after the fixture let
+    /// it go. Later than `opening_at`: [`Hold::Unsettled`].
+    pub settled_at: Option<f64>,
+    /// The largest distance the object moved in the palm's frame from
+    /// `settled_at` to `opening_at` (m).
     pub drift: f32,
     /// The drift that is a slip: the closing hand's finger width (twice
     /// its index fingertip's radius, m). An object that moved farther
@@ -58,8 +93,9 @@ pub struct ClosingVerdict {
     /// Whether the hand let the object go after opening: from some instant
     /// after `opening_at`, and within [`RELEASE_WINDOW`] of `open_at` (or
     /// before the hand's next closing begins), no hand squeezed it any more
-    /// ([`is_squeezed`]). `None` when the recording ends before that window
-    /// does with the object still gripped.
+    /// ([`is_squeezed`]). `None` when the closing was not judged, or when
+    /// the recording ends before that window does with the object still
+    /// gripped.
     pub released: Option<bool>,
     /// From when the object stayed let go (s), if it was.
     pub released_at: Option<f64>,
@@ -73,21 +109,37 @@ pub struct ClosingVerdict {
 }
 
 impl ClosingVerdict {
-    /// Held: the object stayed under the pads while the hand was closed.
+    /// Held: judged, and the object stayed under the pads while the hand
+    /// was closed.
     pub fn held(&self) -> bool {
-        self.slipped_at.is_none()
+        self.hold == Hold::Judged && self.slipped_at.is_none()
     }
 }
 
 impl std::fmt::Display for ClosingVerdict {
-    /// One line, e.g. `closing-1 (hand 31, closed 1.02-2.06 s): held, drift
-    /// 7.3 mm (a slip is 18.7); released at 2.06 s`.
+    /// One line, e.g. `closing-1 (hand 31, closed 1.02-2.06 s, by
+    /// pinch+aperture): held, drift 7.3 mm (a slip is 18.7); released at
+    /// 2.06 s`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "{} (hand {}, closed {:.2}-{:.2} s): ",
-            self.object, self.hand, self.closing_at, self.opening_at
+            "{} (hand {}, closed {:.2}-{:.2} s, by {}): ",
+            self.object, self.hand, self.closing_at, self.opening_at, self.signals
         )?;
+        match self.hold {
+            Hold::TooShort => {
+                return write!(
+                    f,
+                    "too short to judge ({:.2} s; a hold is {MIN_HOLD} s)",
+                    self.hold_s.max(0.0)
+                );
+            }
+            Hold::NeverPressed => return write!(f, "never pressed the object, not judged"),
+            Hold::Unsettled => {
+                return write!(f, "opened before the grip settled on the object, not judged");
+            }
+            Hold::Judged => {}
+        }
         let (drift, bound) = (self.drift * 1e3, self.slip_bound * 1e3);
         match self.slipped_at {
             None => write!(f, "held, drift {drift:.1} mm (a slip is {bound:.1})")?,
@@ -109,7 +161,11 @@ struct Judged {
     id: Option<ObjectId>,
     /// Still held by its fixture.
     fixed: bool,
-    /// The object in the palm frame when the fixture let go.
+    /// The grip's settling time for this object (s).
+    settle: f64,
+    /// Whether a hand has pressed the object while closed.
+    pressed: bool,
+    /// The object in the palm frame once the grip settled.
     reference: Option<Vec3>,
 }
 
@@ -146,6 +202,9 @@ impl Closings {
                     verdict: ClosingVerdict {
                         object: format!("closing-{}", k + 1),
                         hand: playback.tracks[site.track].id,
+                        signals: site.signals,
+                        hold: if site.sustained { Hold::Judged } else { Hold::TooShort },
+                        hold_s: site.hold(),
                         closing_at: site.closing_at,
                         closed_at: site.closed_at,
                         opening_at: site.opening_at,
@@ -153,6 +212,7 @@ impl Closings {
                         site: site.point.to_array(),
                         appeared_at: site.widest_before,
                         gripped_at: None,
+                        settled_at: None,
                         drift: 0.0,
                         slip_bound,
                         slipped_at: None,
@@ -163,6 +223,8 @@ impl Closings {
                     },
                     id: None,
                     fixed: true,
+                    settle: 0.0,
+                    pressed: false,
                     reference: None,
                 }
             })
@@ -172,24 +234,36 @@ impl Closings {
 
     /// The verdicts so far, in the closings' time order.
     pub fn verdicts(&self) -> Vec<ClosingVerdict> {
-        self.judged.iter().map(|j| j.verdict.clone()).collect()
+        let verdict = |j: &Judged| ClosingVerdict { hold: j.hold(), ..j.verdict.clone() };
+        self.judged.iter().map(verdict).collect()
     }
 }
 
+/// The settling time of the grip on object `id` ([`settling_time`]): its
+/// γ and mass, and the contacts' damping ratio (none without a damper).
+fn grip_settling(world: &InteractionWorld, id: ObjectId) -> f64 {
+    let (gamma, mass) = (world.object_gamma(id), world.object_mass(id));
+    let zeta = world.config().damping_ratio.unwrap_or(0.0);
+    let settle = gamma.zip(mass).and_then(|(k, m)| settling_time(k, m, zeta));
+    settle.map_or(0.0, f64::from)
+}
+
 impl Observer for Closings {
-    /// Adds each object at its site when its time comes, and lets each
-    /// fixture go when the hand grips the object or at the most closed
-    /// instant (re-seating the contacts then, as [`super::replay::Fixtures`]
-    /// does).
+    /// Adds each object at its site when its time comes (none for a
+    /// closing too short to judge), and lets each fixture go when the hand
+    /// grips the object or at the most closed instant (re-seating the
+    /// contacts then, as [`super::replay::Fixtures`] does).
     fn before_step(&mut self, world: &mut InteractionWorld, t: f64) -> Result<(), RunError> {
-        for k in 0..self.judged.len() {
-            let j = &self.judged[k];
+        for j in &mut self.judged {
+            if j.verdict.hold == Hold::TooShort {
+                continue;
+            }
             if j.id.is_none() && j.verdict.appeared_at <= t {
                 let id = world.add_object(&self.object.at(&j.site, &j.verdict.object))?;
                 world.set_object_locked(id, true)?;
-                self.judged[k].id = Some(id);
+                j.settle = grip_settling(world, id);
+                j.id = Some(id);
             }
-            let j = &mut self.judged[k];
             let Some(id) = j.id.filter(|_| j.fixed) else { continue };
             let gripped = is_gripped(world, id);
             if gripped || j.site.closed_at <= t {
@@ -199,6 +273,7 @@ impl Observer for Closings {
                 } else {
                     world.reseat_contacts(id)?;
                 }
+                j.verdict.settled_at = Some(t + j.settle);
                 j.fixed = false;
             }
         }
@@ -207,36 +282,76 @@ impl Observer for Closings {
 
     fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
         let t = step.t;
+        let end = self.end;
         for j in &mut self.judged {
             let Some(id) = j.id.filter(|_| !j.fixed) else { continue };
-            let state = step.world.object_state(id)?;
-            let v = &mut j.verdict;
             if t <= j.site.opening_at {
-                let hand = step.hands.get(j.site.track).and_then(|h| h.sample.as_ref());
-                if let Some(hand) = hand {
-                    let local = hand.pose.palm.to_local(state.position);
-                    let reference = *j.reference.get_or_insert(local);
-                    v.drift = v.drift.max(local.distance(reference));
-                    if v.drift > v.slip_bound && v.slipped_at.is_none() {
-                        v.slipped_at = Some(t);
-                    }
-                }
-            } else if v.released.is_none() {
-                if t <= v.release_by {
-                    v.speed_after_open = v.speed_after_open.max(state.linvel.length());
-                    if is_squeezed(step.world, id) {
-                        v.released_at = None;
-                    } else {
-                        v.released_at.get_or_insert(t);
-                    }
-                }
-                let next = t + f64::from(step.world.config().dt);
-                if next > v.release_by {
-                    v.released = Some(v.released_at.is_some());
-                } else if next > self.end && v.released_at.is_some() {
-                    v.released = Some(true);
-                }
+                j.hold_step(step, id)?;
+            } else {
+                j.release_step(step, id, end)?;
             }
+        }
+        Ok(())
+    }
+}
+
+impl Judged {
+    /// Whether the closing can be judged, from what the hold has shown so
+    /// far: not if no hand has pressed the object, or if the grip has not
+    /// settled on it.
+    fn hold(&self) -> Hold {
+        match self.verdict.hold {
+            Hold::Judged if !self.pressed => Hold::NeverPressed,
+            Hold::Judged if self.reference.is_none() => Hold::Unsettled,
+            hold => hold,
+        }
+    }
+
+    /// While the hand is closed: whether a hand presses the object, and,
+    /// once the grip has settled, how far it moves in the palm's frame.
+    fn hold_step(&mut self, step: &StepView, id: ObjectId) -> Result<(), RunError> {
+        let t = step.t;
+        self.pressed |= step.world.contacts_on(id).iter().any(|c| c.normal_force > 0.0);
+        if self.verdict.settled_at.is_none_or(|s| t < s) {
+            return Ok(());
+        }
+        let state = step.world.object_state(id)?;
+        let hand = step.hands.get(self.site.track).and_then(|h| h.sample.as_ref());
+        if let Some(hand) = hand {
+            let v = &mut self.verdict;
+            let local = hand.pose.palm.to_local(state.position);
+            let reference = *self.reference.get_or_insert(local);
+            v.drift = v.drift.max(local.distance(reference));
+            if v.drift > v.slip_bound && v.slipped_at.is_none() {
+                v.slipped_at = Some(t);
+            }
+        }
+        Ok(())
+    }
+
+    /// After the hand opened: settles the hold's verdict, then watches for
+    /// the release until its window ends (`end`: the recording's).
+    fn release_step(&mut self, step: &StepView, id: ObjectId, end: f64) -> Result<(), RunError> {
+        let t = step.t;
+        self.verdict.hold = self.hold();
+        let v = &mut self.verdict;
+        if v.hold != Hold::Judged || v.released.is_some() {
+            return Ok(());
+        }
+        let state = step.world.object_state(id)?;
+        if t <= v.release_by {
+            v.speed_after_open = v.speed_after_open.max(state.linvel.length());
+            if is_squeezed(step.world, id) {
+                v.released_at = None;
+            } else {
+                v.released_at.get_or_insert(t);
+            }
+        }
+        let next = t + f64::from(step.world.config().dt);
+        if next > v.release_by {
+            v.released = Some(v.released_at.is_some());
+        } else if next > end && v.released_at.is_some() {
+            v.released = Some(true);
         }
         Ok(())
     }

@@ -58,9 +58,12 @@ pub enum RunError {
         reason: String,
     },
     /// An object was asked for at a grasp the recording does not have.
-    #[error("the recording has {found} grasps, so there is no grasp {}", wanted + 1)]
+    #[error(
+        "the recording has {found} grasps held long enough to judge, so there is no grasp {}",
+        wanted + 1
+    )]
     NoGrasp {
-        /// Grasps the recording has.
+        /// Grasps the recording has that hold long enough to judge.
         found: usize,
         /// The grasp asked for (0 is the first).
         wanted: usize,

@@ -147,17 +147,18 @@ pub struct Fixture {
 }
 
 /// Places `object` at the site of the recording's `index`-th grasp (in
-/// time order), held fixed in place (as if on a support) until the hand
-/// grips it. The recorded hand grasped nothing, so without the fixture a
-/// finger arriving early would knock the object away before the others
-/// close on it.
+/// time order) that holds long enough to judge ([`GraspSite::sustained`]),
+/// held fixed in place (as if on a support) until the hand grips it. The
+/// recorded hand grasped nothing, so without the fixture a finger arriving
+/// early would knock the object away before the others close on it.
 pub fn place_at_grasp(
     world: &mut InteractionWorld,
     playback: &Playback,
     object: GraspObject,
     index: usize,
 ) -> Result<(Fixture, GraspSite), RunError> {
-    let grasps = find_grasps(playback, SAMPLE_STEP);
+    let mut grasps = find_grasps(playback, SAMPLE_STEP);
+    grasps.retain(|g| g.sustained);
     let site =
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
     let id = world.add_object(&object.at(&site, "grasped"))?;

@@ -5,9 +5,9 @@
 //! is a section entry with its error, not an error of the report.
 
 use super::RunError;
-use super::closing::ClosingVerdict;
+use super::closing::{ClosingVerdict, Hold};
 use super::drive::{Observer, StepView};
-use super::grasp::{SAMPLE_STEP, find_grasps};
+use super::grasp::{SAMPLE_STEP, find_grasps, is_power_grasp};
 use super::replay::{GraspObject, replay, replay_closings, replay_world};
 use super::scenario::Scenario;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
@@ -103,13 +103,13 @@ pub struct ReplayInput {
     pub playback: Playback,
 }
 
-/// The object held at a grasp: a 4 cm, 50 g box in a fist (the tracker's
-/// grab strength at least ½ at the most closed instant), else a 2 cm, 10 g
-/// box, as README's replay examples hold. (A 4.5 cm box is wider than the
-/// gap an opened hand leaves between its index and ring fingers, 37 mm in
+/// The object held at a grasp: a 4 cm, 50 g box in a fist
+/// ([`is_power_grasp`] at the most closed instant), else a 2 cm, 10 g box,
+/// as README's replay examples hold. (A 4.5 cm box is wider than the gap
+/// an opened hand leaves between its index and ring fingers, 37 mm in
 /// `grab.json.lz`: it stays pinched between them.)
 pub fn grasp_object(playback: &Playback, track: usize, closed_at: f64) -> GraspObject {
-    let fist = playback.sample(track, closed_at).and_then(|s| s.grab).is_some_and(|g| g >= 0.5);
+    let fist = playback.sample(track, closed_at).is_some_and(|s| is_power_grasp(&s));
     let (size, mass) = if fist { (0.04, 0.05) } else { (0.02, 0.01) };
     GraspObject { sphere: false, size, mass }
 }
@@ -149,23 +149,29 @@ impl ReplayInput {
         let playback = &self.playback;
         let name = &self.recording.source_name;
         let closings = find_grasps(playback, SAMPLE_STEP);
-        let summary = match closings.first() {
+        let summary = match closings.iter().find(|c| c.sustained) {
             None => {
-                out.placed = "none: no hand closes in the recording".into();
+                out.placed = match closings.len() {
+                    0 => "none: no hand closes in the recording".into(),
+                    n => format!("none: each of its {n} closings is too short to judge"),
+                };
                 replay(name, playback, &mut world, &[], &mut [])?
             }
             Some(first) => {
                 let object = grasp_object(playback, first.track, first.closed_at);
+                let judged = closings.iter().filter(|c| c.sustained).count();
                 out.placed = format!(
-                    "a {:.1} cm, {:.0} g box at each of its {} closings",
+                    "a {:.1} cm, {:.0} g box at each of its {judged} closings long enough to judge",
                     object.size * 100.0,
                     object.mass * 1000.0,
-                    closings.len()
                 );
                 replay_closings(name, playback, &mut world, object, &mut [])?
             }
         };
-        out.verdicts = summary.closings.iter().flat_map(closing_verdicts).collect();
+        let (judged, not): (Vec<_>, Vec<_>) =
+            summary.closings.iter().partition(|c| c.hold == Hold::Judged);
+        out.verdicts = judged.into_iter().flat_map(closing_verdicts).collect();
+        out.not_judged = not.iter().map(ToString::to_string).collect();
         out.steps = summary.steps;
         out.contacts_begun = summary.contacts_begun;
         out.all_finite = summary.all_finite;
@@ -183,8 +189,10 @@ impl ReplayInput {
 /// frame against the slip bound), and let go after opening (how long after
 /// the hand began to open).
 fn closing_verdicts(c: &ClosingVerdict) -> [Verdict; 2] {
-    let label =
-        format!("{} (hand {}, closed {:.2}-{:.2} s)", c.object, c.hand, c.closing_at, c.opening_at);
+    let label = format!(
+        "{} (hand {}, closed {:.2}-{:.2} s, by {})",
+        c.object, c.hand, c.closing_at, c.opening_at, c.signals
+    );
     let let_go = c.released_at.map_or(f64::NAN, |t| t - c.opening_at);
     [
         Verdict {

@@ -82,7 +82,7 @@ fn objects_at_closings_the_recording_lacks_or_that_cannot_exist() {
     let e = cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &empty]);
     names(e, &["object 'closing-1': shape.half_extents"]);
     let e = cli_error(&["replay", "--object-at-grasp", "box:0.04:0.05", "--loop", "1s", &empty]);
-    assert_eq!(e, "the recording has 0 grasps, so there is no grasp 1");
+    assert_eq!(e, "the recording has 0 grasps held long enough to judge, so there is no grasp 1");
 }
 
 #[test]

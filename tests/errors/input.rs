@@ -113,6 +113,11 @@ fn frame_fields_are_named_by_their_json_path() {
     names(e, &["frame 0: pointables[2].tipPosition[1]: absurd value 1000000000000"]);
     let e = frame_error(|f| f["pointables"].as_array_mut().unwrap().truncate(3));
     names(e, &["frame 0: hands[0].fingers: finger 3 of hand 7 is missing"]);
+    // The replay finds closings from the strengths: out of 0..1, refused.
+    let e = frame_error(|f| f["hands"][0]["grabStrength"] = json!(1.25));
+    names(e, &["frame 0: hands[0].grabStrength: must be in [0, 1], got 1.25"]);
+    let e = frame_error(|f| f["hands"][0]["pinchStrength"] = json!([0.5]));
+    names(e, &["frame 0: hands[0].pinchStrength: not a number: [0.5]"]);
 }
 
 #[test]

@@ -4,6 +4,7 @@
 mod balance;
 mod baselines;
 mod bench;
+mod closings;
 mod controls;
 mod energy;
 mod evaluation;

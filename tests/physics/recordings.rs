@@ -4,8 +4,9 @@
 use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::leap;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
-use coulomb_hands::run::closing::ClosingVerdict;
+use coulomb_hands::run::closing::{ClosingVerdict, Hold};
 use coulomb_hands::run::drive::StepView;
+use coulomb_hands::run::grasp::MIN_HOLD;
 use coulomb_hands::run::observe::trace_line;
 use coulomb_hands::run::replay::{replay, replay_closings, world_with_objects};
 use coulomb_hands::{InteractionConfig, ObjectDesc};
@@ -112,8 +113,8 @@ fn a_truncated_recording_is_an_error_naming_the_file() {
 }
 
 /// Replays bundled `name` with the default settings and `object` at every
-/// closing of its hands: each closing's verdict, and how far each object
-/// ended below where it appeared (m).
+/// closing of its hands long enough to judge: each such closing's verdict,
+/// and how far its object ended below where it appeared (m).
 fn closings(name: &str, object: &str) -> Vec<(ClosingVerdict, f32)> {
     let rec = leap::load(&data(name)).unwrap();
     let playback =
@@ -122,9 +123,12 @@ fn closings(name: &str, object: &str) -> Vec<(ClosingVerdict, f32)> {
     let (mut world, _) = world_with_objects(InteractionConfig::default(), &[]).unwrap();
     let summary =
         replay_closings(name, &playback, &mut world, object.parse().unwrap(), &mut []).unwrap();
-    assert_eq!(summary.closings.len(), summary.objects.len(), "{name}: an object per closing");
+    let (placed, short): (Vec<_>, Vec<_>) =
+        summary.closings.into_iter().partition(|c| c.hold != Hold::TooShort);
+    assert!(short.iter().all(|c| c.hold_s < MIN_HOLD), "{name}: {short:?}");
+    assert_eq!(placed.len(), summary.objects.len(), "{name}: an object per closing held");
     let falls = summary.objects.iter().map(|o| o.start[1] - o.end[1]);
-    summary.closings.into_iter().zip(falls).collect()
+    placed.into_iter().zip(falls).collect()
 }
 
 /// A held closing: the object stayed within a finger's width of where the

@@ -83,7 +83,7 @@ fn replay_glitched(frames: &[TrackingFrame], glitch: (f64, f64), lost: (f64, f64
             let ended = coulomb_hands::ContactEventKind::Ended;
             out.ended_in_glitch += w.events().iter().filter(|e| e.kind == ended).count();
         }
-        if t >= site.closed_at && t < site.open_at && !in_glitch {
+        if t >= site.closed_at && t < site.opening_at && !in_glitch {
             let Some(hand) = clean.sample(site.track, t) else { return Ok(()) };
             let local = hand.pose.palm.to_local(state.position);
             let r = *reference.get_or_insert(local);
@@ -111,10 +111,11 @@ fn edit(span: (f64, f64), mut f: impl FnMut(usize, &mut Vec<TrackingFrame>)) -> 
     out
 }
 
-/// The middle of the first closing, and a span of `length` s around it.
+/// The middle of the first closing's hold (from its most closed instant
+/// until it begins to open), and a span of `length` s around it.
 fn mid_closing(length: f64) -> (f64, f64) {
     let site = closing();
-    let mid = 0.5 * (site.closed_at + site.open_at);
+    let mid = 0.5 * (site.closed_at + site.opening_at);
     (mid - length / 2.0, mid + length / 2.0)
 }
 

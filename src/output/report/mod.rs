@@ -300,8 +300,11 @@ pub struct ReplayRun {
     pub glitches: usize,
     /// Why the replay stopped, if it did not finish.
     pub error: Option<String>,
-    /// Verdicts per closing of the hand (two each: held, released).
+    /// Verdicts per judged closing of the hand (two each: held, released).
     pub verdicts: Vec<Verdict>,
+    /// The closings not judged, one line each with why (too short, never
+    /// pressed its object, opened before the grip settled).
+    pub not_judged: Vec<String>,
 }
 
 /// What an object did in a replay.

@@ -535,11 +535,19 @@ fn replays(p: &mut String, runs: &Vec<ReplayRun>) {
         rows.push(vec!["all values finite".into(), r.all_finite.to_string()]);
         rows.push(vec!["tracking glitches left out".into(), r.glitches.to_string()]);
         table(p, &[], &rows);
-        if r.verdicts.is_empty() {
+        if r.verdicts.is_empty() && r.not_judged.is_empty() {
             p.push_str("<p class=\"note\">No hand closes in this recording.</p>\n");
-        } else {
+        }
+        if !r.verdicts.is_empty() {
             p.push_str("<p>Verdicts per closing of the hand:</p>\n");
             verdicts(p, &r.verdicts);
+        }
+        if !r.not_judged.is_empty() {
+            p.push_str("<p>Closings not judged:</p>\n<ul>\n");
+            for line in &r.not_judged {
+                let _ = writeln!(p, "<li>{}</li>", escape(line));
+            }
+            p.push_str("</ul>\n");
         }
     }
 }

@@ -129,10 +129,18 @@ fn full() -> ReportData {
         }),
         replays: Some(Sourced {
             source: sourced("replayed here"),
-            data: vec![ReplayRun {
-                recording: "data/leap/pinch.json.lz".into(),
-                ..ReplayRun::default()
-            }],
+            data: vec![
+                ReplayRun { recording: "data/leap/pinch.json.lz".into(), ..ReplayRun::default() },
+                ReplayRun {
+                    recording: "twitch.json".into(),
+                    not_judged: vec![
+                        "closing-1 (hand 4, closed 1.05-1.07 s, by aperture): too short to \
+                         judge (0.02 s; a hold is 0.15 s) <x>"
+                            .into(),
+                    ],
+                    ..ReplayRun::default()
+                },
+            ],
         }),
     }
 }
@@ -175,6 +183,8 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     assert!(page.contains("A &lt;b&gt;test&lt;/b&gt; &amp; more"));
     assert!(page.contains("Showing 5 of 12 objects"));
     assert!(page.contains("pinch.json.lz") && page.contains("No hand closes"));
+    assert_eq!(page.matches("No hand closes").count(), 1, "a closing not judged is a closing");
+    assert!(page.contains("Closings not judged") && page.contains("0.15 s) &lt;x&gt;</li>"));
     assert!(page.contains("lifted (m)") && page.contains("&gt;= 0.18"));
     assert!(page.contains("--out &#39;a b&#39;"));
     assert!(page.contains("2.6 [1.9, 3.3]") && page.contains("+ contact damper"));
