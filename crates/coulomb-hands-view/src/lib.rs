@@ -86,6 +86,7 @@ impl Viewer {
         // Audio is opened by the sound plugin, and only if there is a device.
         let plugins = DefaultPlugins
             .set(WindowPlugin { primary_window: Some(window), ..default() })
+            .set(render_plugin())
             .disable::<bevy::audio::AudioPlugin>();
         let mut app = App::new();
         app.add_plugins((
@@ -125,6 +126,17 @@ impl Viewer {
 
         Ok(app)
     }
+}
+
+/// The renderer on wgpu's native backends (Vulkan, Metal, DX12), unless
+/// `WGPU_BACKEND` names others. wgpu is built with its GL backend too (the
+/// `openxr` feature needs it, and both builds share one wgpu), and probing
+/// GL where it has no driver only logs an EGL error.
+fn render_plugin() -> bevy::render::RenderPlugin {
+    use bevy::render::settings::{Backends, WgpuSettings};
+    let backends = Backends::from_env().unwrap_or(Backends::PRIMARY);
+    let settings = WgpuSettings { backends: Some(backends), ..default() };
+    bevy::render::RenderPlugin { render_creation: settings.into(), ..default() }
 }
 
 /// `plugins`, with an XR runtime's session and hand tracking when the
