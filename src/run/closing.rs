@@ -114,6 +114,15 @@ impl ClosingVerdict {
     pub fn held(&self) -> bool {
         self.hold == Hold::Judged && self.slipped_at.is_none()
     }
+
+    /// Which closing this is: `closing-1 (hand 31, closed 1.02-2.06 s, by
+    /// pinch+aperture)`, as the summary line and the report name it.
+    pub fn label(&self) -> String {
+        format!(
+            "{} (hand {}, closed {:.2}-{:.2} s, by {})",
+            self.object, self.hand, self.closing_at, self.opening_at, self.signals
+        )
+    }
 }
 
 impl std::fmt::Display for ClosingVerdict {
@@ -121,11 +130,7 @@ impl std::fmt::Display for ClosingVerdict {
     /// pinch+aperture): held, drift 7.3 mm (a slip is 18.7); released at
     /// 2.06 s`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(
-            f,
-            "{} (hand {}, closed {:.2}-{:.2} s, by {}): ",
-            self.object, self.hand, self.closing_at, self.opening_at, self.signals
-        )?;
+        write!(f, "{}: ", self.label())?;
         match self.hold {
             Hold::TooShort => {
                 return write!(

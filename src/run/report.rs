@@ -189,10 +189,7 @@ impl ReplayInput {
 /// frame against the slip bound), and let go after opening (how long after
 /// the hand began to open).
 fn closing_verdicts(c: &ClosingVerdict) -> [Verdict; 2] {
-    let label = format!(
-        "{} (hand {}, closed {:.2}-{:.2} s, by {})",
-        c.object, c.hand, c.closing_at, c.opening_at, c.signals
-    );
+    let label = c.label();
     let let_go = c.released_at.map_or(f64::NAN, |t| t - c.opening_at);
     [
         Verdict {
