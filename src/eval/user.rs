@@ -29,9 +29,8 @@ use crate::scene::ObjectId;
 use glam::{Quat, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use std::cell::Cell;
 use std::collections::VecDeque;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex, PoisonError};
 
 /// Re-grips after the first placement, at most.
 pub const MAX_CORRECTIONS: usize = 3;
@@ -121,8 +120,23 @@ impl UserParams {
     }
 }
 
-/// What a user sees: the cube's pose after the last step.
-pub type Sight = Rc<Cell<Option<(Vec3, Quat)>>>;
+/// What a user sees: the cube's pose after the last step, shared by the
+/// [`Eyes`] that write it and the [`User`] (a hand source, so `Send`) that
+/// reads it.
+#[derive(Debug, Clone, Default)]
+pub struct Sight(Arc<Mutex<Option<(Vec3, Quat)>>>);
+
+impl Sight {
+    /// Shows the cube at this pose (m).
+    pub fn set(&self, pose: Option<(Vec3, Quat)>) {
+        *self.0.lock().unwrap_or_else(PoisonError::into_inner) = pose;
+    }
+
+    /// The pose last shown, if any.
+    pub fn get(&self) -> Option<(Vec3, Quat)> {
+        *self.0.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+}
 
 /// The observer that shows the cube's pose to a user.
 pub struct Eyes {

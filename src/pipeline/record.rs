@@ -34,8 +34,10 @@ pub enum Call {
 
 /// Sees every call that changes a world, after the world accepted it.
 /// Calls the world rejected are not seen. It is `'static` so the world can
-/// hand it back by type ([`crate::InteractionWorld::take_recorder`]).
-pub trait Recorder: std::any::Any {
+/// hand it back by type ([`crate::InteractionWorld::take_recorder`]), and
+/// `Send + Sync` so a world that records can still live in an app's
+/// resource.
+pub trait Recorder: std::any::Any + Send + Sync {
     /// One accepted call.
     fn record(&mut self, call: &Call);
 }

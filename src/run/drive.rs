@@ -13,9 +13,13 @@ use crate::hand::{HandId, HandPose, HandSample, Side};
 use crate::input::playback::Playback;
 use crate::pipeline::InteractionWorld;
 use std::borrow::BorrowMut;
+use std::sync::{Mutex, PoisonError};
 
 /// Where one hand's poses come from, sampled on the physics clock.
-pub trait HandSource {
+///
+/// `Send`, so that a world and its sources can live in an app's resource
+/// and be stepped from whichever thread the app's scheduler picks.
+pub trait HandSource: Send {
     /// Which hand it is.
     fn side(&self) -> Side;
 
@@ -71,14 +75,14 @@ pub struct PoseFn<F> {
     pose: F,
 }
 
-impl<F: FnMut(f64) -> Option<HandPose>> PoseFn<F> {
+impl<F: FnMut(f64) -> Option<HandPose> + Send> PoseFn<F> {
     /// A `side` hand whose pose at `t` is `pose(t)`, or untracked for `None`.
     pub fn new(side: Side, pose: F) -> Self {
         PoseFn { side, pose }
     }
 }
 
-impl<F: FnMut(f64) -> Option<HandPose>> HandSource for PoseFn<F> {
+impl<F: FnMut(f64) -> Option<HandPose> + Send> HandSource for PoseFn<F> {
     fn side(&self) -> Side {
         self.side
     }
@@ -109,6 +113,13 @@ impl HandSource for RecordedHand<'_> {
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
         Ok(self.playback.sample(self.track, t))
     }
+}
+
+/// A driver's source, whose lock is never taken (so never poisoned).
+fn unlocked<'a, 's>(
+    source: &'a mut Mutex<Box<dyn HandSource + 's>>,
+) -> &'a mut (dyn HandSource + 's) {
+    &mut **source.get_mut().unwrap_or_else(PoisonError::into_inner)
 }
 
 /// A driven hand as one step saw it.
@@ -181,7 +192,10 @@ impl<F: FnMut(&StepView) -> Result<(), RunError>> Observer for F {
 /// driver must outlive the caller's stack, as in an app's resource.
 pub struct Driver<'s, W: BorrowMut<InteractionWorld>> {
     world: W,
-    sources: Vec<Box<dyn HandSource + 's>>,
+    /// Each behind a lock that is never taken (only `get_mut`, which the
+    /// driver's `&mut self` allows): sources need only be `Send`, and a
+    /// driver is still `Sync`, as an app's resource must be.
+    sources: Vec<Mutex<Box<dyn HandSource + 's>>>,
     frames: Vec<HandFrame>,
     /// The world's time when the driver took it (s).
     start: f64,
@@ -215,7 +229,7 @@ impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
     fn push(&mut self, id: HandId, source: Box<dyn HandSource + 's>) {
         let label = source.tracker_id().unwrap_or(self.sources.len() as i64);
         self.frames.push(HandFrame { id, label, side: source.side(), sample: None });
-        self.sources.push(source);
+        self.sources.push(Mutex::new(source));
     }
 
     /// The world being driven.
@@ -271,13 +285,13 @@ impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
             o.before_step(world, t)?;
         }
         for (source, frame) in self.sources.iter_mut().zip(self.frames.iter_mut()) {
-            frame.sample = source.sample(t)?;
+            frame.sample = unlocked(source).sample(t)?;
             match &frame.sample {
                 Some(s) => world.set_hand_pose(frame.id, &s.pose)?,
                 None => world.clear_hand_pose(frame.id)?,
             }
         }
-        if !self.sources.is_empty() && self.sources.iter().all(|s| s.finished()) {
+        if !self.sources.is_empty() && self.sources.iter_mut().all(|s| unlocked(s).finished()) {
             return Ok(false);
         }
         world.apply_hand_forces();

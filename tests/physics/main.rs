@@ -64,7 +64,7 @@ pub fn run(
     world: &mut InteractionWorld,
     hand: HandId,
     seconds: f32,
-    mut pose: impl FnMut(f32) -> HandPose,
+    mut pose: impl FnMut(f32) -> HandPose + Send,
     mut each: impl FnMut(&InteractionWorld, f32),
 ) {
     let steps = (seconds / world.config().dt).round() as usize;

@@ -1,57 +1,80 @@
-//! Contacts for the app: begin and end as Bevy messages, one per contact
-//! event of every physics step, and the active contacts as a resource.
+//! Contacts for the app, by entity: every contact's begin and end as Bevy
+//! messages, each object's first touch and final release as events
+//! triggered on the object's entity (for its observers), and the active
+//! contacts as a resource.
 
 use crate::convert::to_bevy_vec3;
-use crate::interaction::Interaction;
+use crate::entities::InteractionEntities;
+use crate::physics::HandPhysics;
+use crate::reflect::{BoneReflect, FrictionStateReflect};
 use bevy::math::Vec3;
 use bevy::prelude::*;
-use coulomb_hands::contact::{Contact, ContactEvent};
+use coulomb_hands::contact::{Contact, ContactEvent, ContactEventKind};
 use coulomb_hands::friction::FrictionState;
-use coulomb_hands::hand::{Bone, HandId};
+use coulomb_hands::hand::Bone;
 use coulomb_hands::scene::ObjectId;
 
 /// Which bone touched which object, where and when: what a contact's begin
-/// or end carries. [`crate::entities::InteractionEntities`] maps the ids
-/// to entities.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// or end carries.
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
 pub struct ContactChange {
-    /// The contact's hand.
-    pub hand: HandId,
-    /// The contact's bone.
-    pub bone: Bone,
-    /// The object touched.
-    pub object: ObjectId,
+    /// The object's entity.
+    pub object: Entity,
+    /// The bone's entity (a [`crate::entities::HandBone`]).
+    pub bone: Entity,
+    /// Its hand's entity.
+    pub hand: Entity,
+    /// Which bone of the hand it is.
+    #[reflect(remote = BoneReflect)]
+    pub kind: Bone,
     /// The contact point C at that moment (world, m).
     pub point: Vec3,
     /// The physics time at the end of the step (s).
     pub time: f64,
 }
 
-impl ContactChange {
-    fn of(e: &ContactEvent) -> ContactChange {
-        let point = to_bevy_vec3(e.point);
-        ContactChange { hand: e.hand, bone: e.bone, object: e.object, point, time: e.time }
-    }
-}
-
 /// A bone came within the contact offset of an object.
-#[derive(Message, Debug, Clone, Copy, PartialEq)]
+#[derive(Message, Reflect, Debug, Clone, Copy, PartialEq, Deref)]
 pub struct ContactBegan(pub ContactChange);
 
 /// A bone left the release offset, its hand lost tracking, or its object's
 /// contacts were re-seated.
-#[derive(Message, Debug, Clone, Copy, PartialEq)]
+#[derive(Message, Reflect, Debug, Clone, Copy, PartialEq, Deref)]
 pub struct ContactEnded(pub ContactChange);
 
+/// Triggered on an object's entity when a hand touches it while no bone
+/// did: the bone that touched first. (Contacts re-seated within a step do
+/// not count: the object was touched throughout.)
+#[derive(EntityEvent, Reflect, Debug, Clone, Copy, PartialEq)]
+pub struct ObjectTouched {
+    /// The object.
+    pub entity: Entity,
+    /// How its first contact began.
+    pub contact: ContactChange,
+}
+
+/// Triggered on an object's entity when its last contact with a hand
+/// ends: the bone that left last.
+#[derive(EntityEvent, Reflect, Debug, Clone, Copy, PartialEq)]
+pub struct ObjectReleased {
+    /// The object.
+    pub entity: Entity,
+    /// How its last contact ended.
+    pub contact: ContactChange,
+}
+
 /// One active contact after the frame's last physics step.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
 pub struct ContactView {
-    /// The hand whose bone touches.
-    pub hand: HandId,
-    /// The bone that touches.
-    pub bone: Bone,
     /// The object touched.
-    pub object: ObjectId,
+    pub object: Entity,
+    /// The bone that touches.
+    pub bone: Entity,
+    /// The bone's hand.
+    pub hand: Entity,
+    /// Which bone of the hand it is.
+    #[reflect(remote = BoneReflect)]
+    pub kind: Bone,
     /// The contact point C on the object's surface (world, m).
     pub point: Vec3,
     /// The contact normal at C (world, unit).
@@ -61,55 +84,115 @@ pub struct ContactView {
     /// The force on the object in the last step (N).
     pub force: Vec3,
     /// Whether it stuck, slipped or did not press.
+    #[reflect(remote = FrictionStateReflect)]
     pub state: FrictionState,
-}
-
-impl ContactView {
-    fn of(c: &Contact) -> ContactView {
-        ContactView {
-            hand: c.hand,
-            bone: c.bone,
-            object: c.object,
-            point: to_bevy_vec3(c.point),
-            normal: to_bevy_vec3(c.normal),
-            bone_point: to_bevy_vec3(c.bone_point),
-            force: to_bevy_vec3(c.force),
-            state: c.state,
-        }
-    }
 }
 
 /// The active hand–object contacts after the frame's last physics step,
 /// ordered by (object, hand, bone).
-#[derive(Resource, Debug, Clone, Default)]
+#[derive(Resource, Reflect, Debug, Clone, Default)]
+#[reflect(Resource, Default)]
 pub struct Contacts(pub Vec<ContactView>);
 
-/// Runs one physics step per fixed tick and writes its contact events as
-/// messages.
-pub fn step_interaction(
-    interaction: Option<NonSendMut<Interaction>>,
+/// The entities of a contact's object, bone and hand; `None` only for a
+/// world changed behind the plugin's back within a step.
+fn entities_of(
+    entities: &InteractionEntities,
+    object: ObjectId,
+    hand: coulomb_hands::hand::HandId,
+    bone: Bone,
+) -> Option<(Entity, Entity, Entity)> {
+    Some((entities.object(object)?, entities.bone(hand, bone)?, entities.hand(hand)?))
+}
+
+fn change(entities: &InteractionEntities, e: &ContactEvent) -> Option<ContactChange> {
+    let (object, bone, hand) = entities_of(entities, e.object, e.hand, e.bone)?;
+    let point = to_bevy_vec3(e.point);
+    Some(ContactChange { object, bone, hand, kind: e.bone, point, time: e.time })
+}
+
+fn view(entities: &InteractionEntities, c: &Contact) -> Option<ContactView> {
+    let (object, bone, hand) = entities_of(entities, c.object, c.hand, c.bone)?;
+    Some(ContactView {
+        object,
+        bone,
+        hand,
+        kind: c.bone,
+        point: to_bevy_vec3(c.point),
+        normal: to_bevy_vec3(c.normal),
+        bone_point: to_bevy_vec3(c.bone_point),
+        force: to_bevy_vec3(c.force),
+        state: c.state,
+    })
+}
+
+/// The objects a hand touched after the last step, by [`ObjectId`] index.
+#[derive(Resource, Debug, Default)]
+pub(crate) struct Touched {
+    serial: Option<u64>,
+    objects: Vec<bool>,
+}
+
+/// Runs one physics step, writes its contact events as messages, and
+/// triggers the objects' touches and releases.
+pub(crate) fn step_physics(
+    physics: Option<ResMut<HandPhysics>>,
+    entities: Res<InteractionEntities>,
+    mut touched: ResMut<Touched>,
     mut began: MessageWriter<ContactBegan>,
     mut ended: MessageWriter<ContactEnded>,
+    mut commands: Commands,
 ) {
-    let Some(mut interaction) = interaction else { return };
-    if !interaction.step() {
+    let Some(mut physics) = physics else { return };
+    if touched.serial != Some(physics.serial()) {
+        *touched = Touched { serial: Some(physics.serial()), objects: Vec::new() };
+    }
+    if !physics.step() {
         return;
     }
-    for e in interaction.world().events() {
+    let world = physics.world();
+    let mut now = vec![false; world.object_count()];
+    for c in world.contacts() {
+        now[c.object.0 as usize] = true;
+    }
+    let before = |id: ObjectId| touched.objects.get(id.0 as usize).copied().unwrap_or(false);
+    let mut first = vec![None; now.len()];
+    let mut last = vec![None; now.len()];
+    for e in world.events() {
+        let Some(change) = change(&entities, e) else { continue };
         match e.kind {
-            coulomb_hands::contact::ContactEventKind::Began => {
-                began.write(ContactBegan(ContactChange::of(e)));
+            ContactEventKind::Began => {
+                began.write(ContactBegan(change));
+                first[e.object.0 as usize].get_or_insert(change);
             }
-            coulomb_hands::contact::ContactEventKind::Ended => {
-                ended.write(ContactEnded(ContactChange::of(e)));
+            ContactEventKind::Ended => {
+                ended.write(ContactEnded(change));
+                last[e.object.0 as usize] = Some(change);
             }
         }
     }
+    for (i, &touching) in now.iter().enumerate() {
+        let was = before(ObjectId(i as u32));
+        match (was, touching, first[i], last[i]) {
+            (false, true, Some(contact), _) => {
+                commands.trigger(ObjectTouched { entity: contact.object, contact });
+            }
+            (true, false, _, Some(contact)) => {
+                commands.trigger(ObjectReleased { entity: contact.object, contact });
+            }
+            _ => {}
+        }
+    }
+    touched.objects = now;
 }
 
 /// Copies the active contacts into [`Contacts`].
-pub fn sync_contacts(interaction: Option<NonSend<Interaction>>, mut contacts: ResMut<Contacts>) {
-    let Some(interaction) = interaction else { return };
+pub(crate) fn sync_contacts(
+    physics: Option<Res<HandPhysics>>,
+    entities: Res<InteractionEntities>,
+    mut contacts: ResMut<Contacts>,
+) {
+    let Some(physics) = physics else { return };
     contacts.0.clear();
-    contacts.0.extend(interaction.world().contacts().iter().map(ContactView::of));
+    contacts.0.extend(physics.world().contacts().iter().filter_map(|c| view(&entities, c)));
 }

@@ -3,43 +3,58 @@
 //!
 //! An object is one entity. A hand is an entity with its 16 bones as
 //! children; the hand stays at the origin, so a bone's transform is its
-//! pose in the world (m, y up).
+//! pose in the world (m, y up). The plugin spawns the entities of the
+//! world's objects and hands; an app's own hand entity ([`AppHand`]) is
+//! given its bones.
 
 use crate::convert;
-use crate::interaction::Interaction;
+use crate::input::{self, AppHand, AppHandLink};
+use crate::physics::HandPhysics;
+use crate::physics::HandPhysicsReplaced;
+use crate::reflect::{BoneReflect, HandIdReflect, ObjectIdReflect, SideReflect};
 use bevy::math::{Quat, Vec3};
 use bevy::prelude::*;
 use coulomb_hands::hand::{BONES_PER_HAND, Bone, BoneShape, HandId, HandPose, Side};
 use coulomb_hands::scene::ObjectId;
+/// An object of the interaction world. Its `Transform` follows the world.
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Eq)]
+#[reflect(Component, Debug, PartialEq)]
+#[require(Transform)]
+pub struct InteractionObject(#[reflect(remote = ObjectIdReflect)] pub ObjectId);
 
-/// An object of the interaction world.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct InteractionObject(pub ObjectId);
-
-/// A hand of the interaction world.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+/// A hand of the interaction world, with its 16 [`HandBone`]s as children.
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Eq)]
+#[reflect(Component, Debug, PartialEq)]
+#[require(Transform)]
 pub struct InteractionHand {
     /// The hand in the world.
+    #[reflect(remote = HandIdReflect)]
     pub id: HandId,
     /// Which hand.
+    #[reflect(remote = SideReflect)]
     pub side: Side,
     /// Whether its source gave a pose for the last step.
     pub tracked: bool,
 }
 
-/// One bone of a hand, posed by its transform.
-#[derive(Component, Debug, Clone, Copy, PartialEq)]
+/// One bone of a hand, posed by its `Transform` (world, m: the hand
+/// entity stays at the origin).
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Component, Debug, PartialEq)]
+#[require(Transform)]
 pub struct HandBone {
     /// Its hand.
+    #[reflect(remote = HandIdReflect)]
     pub hand: HandId,
     /// Which bone.
+    #[reflect(remote = BoneReflect)]
     pub bone: Bone,
     /// Its size in the last tracked pose (trackers change bone lengths).
     pub size: BoneSize,
 }
 
 /// A bone's size, about its transform.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Reflect, Debug, Clone, Copy, PartialEq)]
 pub enum BoneSize {
     /// Not posed yet.
     Unknown,
@@ -55,13 +70,23 @@ pub enum BoneSize {
     },
 }
 
-/// The entities the plugin spawned, by the world's ids.
-#[derive(Resource, Debug, Default)]
+/// The entities of the world's objects and hands, by the world's ids.
+#[derive(Resource, Reflect, Debug, Default)]
+#[reflect(Resource, Default)]
 pub struct InteractionEntities {
-    /// The [`Interaction::serial`] they were spawned for.
+    /// The [`HandPhysics::serial`] they are for.
     serial: Option<u64>,
     objects: Vec<Entity>,
-    hands: Vec<(Entity, [Entity; BONES_PER_HAND])>,
+    hands: Vec<HandEntities>,
+}
+
+/// A hand's entity and its bones'.
+#[derive(Reflect, Debug, Clone, Copy)]
+struct HandEntities {
+    hand: Entity,
+    bones: [Entity; BONES_PER_HAND],
+    /// An [`AppHand`]: the app's entity, which outlives the world.
+    app: bool,
 }
 
 impl InteractionEntities {
@@ -72,12 +97,31 @@ impl InteractionEntities {
 
     /// The entity of a hand.
     pub fn hand(&self, id: HandId) -> Option<Entity> {
-        self.hands.get(id.0 as usize).map(|h| h.0)
+        self.hands.get(id.0 as usize).map(|h| h.hand)
     }
 
     /// The entity of one bone of a hand.
     pub fn bone(&self, id: HandId, bone: Bone) -> Option<Entity> {
-        self.hands.get(id.0 as usize).map(|h| h.1[bone.index()])
+        self.hands.get(id.0 as usize).map(|h| h.bones[bone.index()])
+    }
+
+    /// Forgets the entities of a replaced world: despawns the objects and
+    /// the plugin's hands, and unlinks the app's hands (their bones go).
+    fn clear(&mut self, commands: &mut Commands) {
+        // `try_`: the app may have despawned any of them already.
+        for object in self.objects.drain(..) {
+            commands.entity(object).try_despawn();
+        }
+        for hand in self.hands.drain(..) {
+            if hand.app {
+                commands.entity(hand.hand).try_remove::<(InteractionHand, AppHandLink)>();
+                for bone in hand.bones {
+                    commands.entity(bone).try_despawn();
+                }
+            } else {
+                commands.entity(hand.hand).try_despawn();
+            }
+        }
     }
 }
 
@@ -98,25 +142,26 @@ pub fn bone_transform(pose: &HandPose, bone: Bone) -> (Transform, BoneSize) {
     }
 }
 
-/// Spawns entities for the objects and hands that have none yet; a newly
-/// inserted [`Interaction`] first despawns those of the one it replaced
-/// (told apart by [`Interaction::serial`]: inserting over non-send data
-/// does not mark it added).
-pub fn spawn_entities(
-    interaction: Option<NonSend<Interaction>>,
+/// Spawns entities for the objects and hands of the world that have none
+/// yet, and adds the app's unlinked [`AppHand`]s to the world. A newly
+/// inserted [`HandPhysics`] first clears those of the one it replaced
+/// (told apart by [`HandPhysics::serial`]: inserting over a resource does
+/// not mark it added), and says so.
+pub(crate) fn spawn_entities(
+    physics: Option<ResMut<HandPhysics>>,
     mut entities: ResMut<InteractionEntities>,
+    app_hands: Query<(Entity, &AppHand, Option<&AppHandLink>)>,
+    mut replaced: MessageWriter<HandPhysicsReplaced>,
     mut commands: Commands,
 ) {
-    let Some(interaction) = interaction else { return };
+    let Some(mut physics) = physics else { return };
     let entities = &mut *entities;
-    if entities.serial != Some(interaction.serial()) {
-        entities.serial = Some(interaction.serial());
-        let hands = entities.hands.drain(..).map(|h| h.0);
-        for entity in entities.objects.drain(..).chain(hands) {
-            commands.entity(entity).despawn();
-        }
+    if entities.serial != Some(physics.serial()) {
+        entities.clear(&mut commands);
+        entities.serial = Some(physics.serial());
+        replaced.write(HandPhysicsReplaced { serial: physics.serial() });
     }
-    let world = interaction.world();
+    let world = physics.world();
     for id in world.object_ids().skip(entities.objects.len()) {
         let state = world.object_state(id).ok();
         let transform =
@@ -126,27 +171,51 @@ pub fn spawn_entities(
     }
     for i in entities.hands.len()..world.hand_count() {
         let id = HandId(i as u32);
-        let Some(side) = world.hand_side(id) else { continue };
-        let hand = InteractionHand { id, side, tracked: false };
-        let parent = commands.spawn((hand, Transform::IDENTITY)).id();
-        let bones = std::array::from_fn(|i| {
-            let bone = HandBone { hand: id, bone: Bone::from_index(i), size: BoneSize::Unknown };
-            commands.spawn((bone, Transform::IDENTITY, ChildOf(parent))).id()
-        });
-        entities.hands.push((parent, bones));
+        let side = world.hand_side(id).unwrap_or(Side::Right);
+        let hand = commands.spawn(Name::new(format!("{side:?} hand"))).id();
+        entities.hands.push(give_bones(&mut commands, hand, id, side, false));
     }
+    // Left hands first, then by entity, so a world's hand ids do not depend
+    // on the query's order.
+    let serial = physics.serial();
+    let mut unlinked: Vec<(Entity, AppHand)> = (app_hands.iter())
+        .filter(|(_, _, link)| link.is_none_or(|l| l.serial != serial))
+        .map(|(entity, hand, _)| (entity, *hand))
+        .collect();
+    unlinked.sort_by_key(|(entity, hand)| (hand.side == Side::Right, *entity));
+    for (entity, app_hand) in unlinked {
+        let (id, link) = input::attach(&mut physics, app_hand);
+        commands.entity(entity).insert(link);
+        entities.hands.push(give_bones(&mut commands, entity, id, app_hand.side, true));
+    }
+}
+
+/// Makes `hand` the world's hand `id`, with 16 bone entities as children.
+fn give_bones(
+    commands: &mut Commands,
+    hand: Entity,
+    id: HandId,
+    side: Side,
+    app: bool,
+) -> HandEntities {
+    commands.entity(hand).insert(InteractionHand { id, side, tracked: false });
+    let bones = std::array::from_fn(|i| {
+        let bone = HandBone { hand: id, bone: Bone::from_index(i), size: BoneSize::Unknown };
+        commands.spawn((bone, ChildOf(hand))).id()
+    });
+    HandEntities { hand, bones, app }
 }
 
 /// Sets every object's and bone's transform from the world after the
 /// frame's physics steps. An untracked hand's bones keep their last pose.
-pub fn sync_transforms(
-    interaction: Option<NonSend<Interaction>>,
+pub(crate) fn sync_transforms(
+    physics: Option<Res<HandPhysics>>,
     mut objects: Query<(&InteractionObject, &mut Transform), Without<HandBone>>,
     mut hands: Query<&mut InteractionHand>,
     mut bones: Query<(&mut HandBone, &mut Transform), Without<InteractionObject>>,
 ) {
-    let Some(interaction) = interaction else { return };
-    let world = interaction.world();
+    let Some(physics) = physics else { return };
+    let world = physics.world();
     for (object, mut transform) in &mut objects {
         if let Ok(s) = world.object_state(object.0) {
             *transform = convert::transform(s.position, s.rotation);

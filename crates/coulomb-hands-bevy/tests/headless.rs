@@ -1,8 +1,9 @@
 //! The plugin in a headless app (`MinimalPlugins`, no window), with frame
 //! times set by hand: a shipped scenario's grasp lifts its object's entity,
-//! contact messages arrive, the physics rate does not follow the frame
-//! rate, pushed hands pose the world, and a failed step stops the physics
-//! without stopping the app.
+//! contact messages and object events arrive with their entities, the
+//! physics rate does not follow the frame rate (nor changes the app's fixed
+//! clock), app hands pose the world and outlive it, and a failed step stops
+//! the physics without stopping the app.
 
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
@@ -12,14 +13,9 @@ use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld};
 use coulomb_hands::run::drive::{Driver, PoseFn, StepView};
 use coulomb_hands::run::scenario::Scenario;
 use coulomb_hands::scene::{ObjectDesc, ObjectId, StaticDesc};
-use coulomb_hands_bevy::CoulombHandsPlugin;
-use coulomb_hands_bevy::contacts::{ContactBegan, ContactChange, ContactEnded, Contacts};
 use coulomb_hands_bevy::convert::{to_bevy_quat, to_bevy_vec3};
-use coulomb_hands_bevy::entities::{
-    BoneSize, HandBone, InteractionEntities, InteractionHand, InteractionObject, bone_transform,
-};
-use coulomb_hands_bevy::interaction::{Interaction, Stopped};
-use coulomb_hands_bevy::sources::PushedHand;
+use coulomb_hands_bevy::entities::bone_transform;
+use coulomb_hands_bevy::prelude::*;
 use std::time::Duration;
 
 /// Every contact message the app's `Update` saw, in order.
@@ -38,19 +34,19 @@ fn record(
     seen.ended.extend(ended.read().map(|m| m.0));
 }
 
-/// A headless app around `interaction`, whose every frame lasts `frame`.
-fn app(interaction: Interaction, frame: Duration) -> App {
+/// A headless app around `physics`, whose every frame lasts `frame`.
+fn app(physics: HandPhysics, frame: Duration) -> App {
     let mut app = App::new();
     app.add_plugins((MinimalPlugins, CoulombHandsPlugin))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<Seen>()
         .add_systems(Update, record)
-        .insert_non_send(interaction);
+        .insert_resource(physics);
     app
 }
 
-fn interaction(app: &App) -> &Interaction {
-    app.world().non_send::<Interaction>()
+fn interaction(app: &App) -> &HandPhysics {
+    app.world().resource::<HandPhysics>()
 }
 
 fn scenario(name: &str) -> Scenario {
@@ -94,7 +90,7 @@ fn a_scripted_grasp_lifts_the_object_entity_as_the_headless_driver_does() {
     let cube = world.object_ids().next().unwrap();
     let headless = world.object_state(cube).unwrap();
 
-    let mut app = app(Interaction::of_scenario(&s).unwrap(), Duration::from_millis(20));
+    let mut app = app(HandPhysics::of_scenario(&s).unwrap(), Duration::from_millis(20));
     app.update();
     let start = object_transform(&mut app, cube).translation;
     run_until(&mut app, steps);
@@ -106,23 +102,30 @@ fn a_scripted_grasp_lifts_the_object_entity_as_the_headless_driver_does() {
     assert_eq!(end.translation, to_bevy_vec3(headless.position));
     assert_eq!(end.rotation, to_bevy_quat(headless.rotation));
     let seen = app.world().resource::<Seen>();
+    let entities = app.world().resource::<InteractionEntities>();
+    let cube_entity = entities.object(cube).unwrap();
     let kinds = [(ContactEventKind::Began, &seen.began), (ContactEventKind::Ended, &seen.ended)];
     for (kind, messages) in kinds {
-        let want: Vec<_> = events.iter().filter(|e| e.0 == kind).map(|e| (e.1, e.2, e.3)).collect();
-        let got: Vec<_> = messages.iter().map(|m| (m.hand, m.bone, m.time)).collect();
+        let want: Vec<_> = (events.iter().filter(|e| e.0 == kind))
+            .map(|e| (cube_entity, entities.hand(e.1), entities.bone(e.1, e.2), e.2, e.3))
+            .collect();
+        let got: Vec<_> = messages
+            .iter()
+            .map(|m| (m.object, Some(m.hand), Some(m.bone), m.kind, m.time))
+            .collect();
         assert_eq!(got, want, "{kind:?} messages");
     }
     assert!(seen.began.len() >= 2, "a grasp needs the thumb and a finger: {}", seen.began.len());
     // Still held at the end: the contacts resource shows the grip.
     let contacts = app.world().resource::<Contacts>();
     assert_eq!(contacts.0.len(), interaction(&app).world().contacts().len());
-    assert!(contacts.0.iter().filter(|c| c.object == cube).count() >= 2);
+    assert!(contacts.0.iter().filter(|c| c.object == cube_entity).count() >= 2);
 }
 
 #[test]
 fn hand_bones_are_child_entities_posed_as_the_world_poses_them() {
     let s = scenario("grasp-lift");
-    let mut app = app(Interaction::of_scenario(&s).unwrap(), Duration::from_millis(20));
+    let mut app = app(HandPhysics::of_scenario(&s).unwrap(), Duration::from_millis(20));
     for _ in 0..10 {
         app.update();
     }
@@ -153,23 +156,36 @@ fn hand_bones_are_child_entities_posed_as_the_world_poses_them() {
 }
 
 #[test]
-fn the_physics_rate_does_not_follow_the_frame_rate() {
+fn the_physics_rate_does_not_follow_the_frame_rate_nor_change_the_apps_fixed_clock() {
     let s = scenario("grasp-lift");
     // 1.6 s of app time in frames of 20 ms, 8 ms and a 60 Hz display's,
     // after a first frame that only starts Bevy's clock.
     let frames = [(20_000_000, 81), (8_000_000, 201), (16_666_667, 97)];
     let mut ends = Vec::new();
     for (nanos, count) in frames {
-        let mut app = app(Interaction::of_scenario(&s).unwrap(), Duration::from_nanos(nanos));
+        let mut app = app(HandPhysics::of_scenario(&s).unwrap(), Duration::from_nanos(nanos));
+        #[derive(Resource, Default)]
+        struct FixedTicks(u32);
+        app.init_resource::<FixedTicks>()
+            .add_systems(FixedUpdate, |mut n: ResMut<FixedTicks>| n.0 += 1);
         for _ in 0..count {
             app.update();
         }
         let elapsed = app.world().resource::<Time<Virtual>>().elapsed();
-        let fixed = app.world().resource::<Time<Fixed>>().timestep();
-        assert_eq!(fixed, Duration::from_millis(1), "the world's dt");
-        // One step per whole dt of app time, however the frames cut it.
+        let dt = interaction(&app).timestep();
+        assert_eq!(dt, Duration::from_millis(1), "the world's dt");
+        // One step per whole dt of app time, however the frames cut it,
+        // and the physics clock says so.
         let steps = interaction(&app).steps();
-        assert_eq!(steps as u128, elapsed.as_nanos() / fixed.as_nanos(), "{nanos} ns frames");
+        assert_eq!(steps as u128, elapsed.as_nanos() / dt.as_nanos(), "{nanos} ns frames");
+        let clock = app.world().resource::<Time<HandClock>>();
+        assert_eq!(clock.elapsed(), dt * steps as u32);
+        assert!(clock.context().overstep() < dt);
+        // The app's own fixed loop keeps Bevy's 64 Hz.
+        let fixed = app.world().resource::<Time<Fixed>>();
+        assert_eq!(fixed.timestep(), Time::<Fixed>::default().timestep());
+        let ticks = app.world().resource::<FixedTicks>().0;
+        assert_eq!(u128::from(ticks), elapsed.as_nanos() / fixed.timestep().as_nanos());
         let cube = interaction(&app).world().object_ids().next().unwrap();
         ends.push((steps, object_transform(&mut app, cube)));
     }
@@ -188,36 +204,100 @@ fn cube_world() -> (InteractionWorld, ObjectId) {
     (world, cube)
 }
 
+fn closed_claw() -> coulomb_hands::hand::HandPose {
+    coulomb_hands::run::demo::claw_grasp(0.025, 1.0, 0.002)
+}
+
 #[test]
-fn a_pushed_hand_takes_the_newest_pose_and_loses_its_contacts_untracked() {
+fn an_app_hand_poses_the_world_by_its_input_and_loses_its_contacts_untracked() {
     let (world, cube) = cube_world();
-    let mut driven = Interaction::new(world);
-    let (source, inlet) = PushedHand::new(Side::Right);
-    let hand = driven.add_hand(source);
-    let mut app = app(driven, Duration::from_millis(20));
+    let mut app = app(HandPhysics::new(world), Duration::from_millis(20));
+    let entity = app.world_mut().spawn(AppHand::new(Side::Right)).id();
     app.update();
     assert!(app.world().resource::<Seen>().began.is_empty(), "untracked: no contacts");
-    let closed = coulomb_hands::run::demo::claw_grasp(0.025, 1.0, 0.002);
-    inlet.push(Some(coulomb_hands::hand::HandSample::from_pose(closed.clone())));
+    let hand = app.world().get::<InteractionHand>(entity).expect("made a hand of the world");
+    assert_eq!((hand.side, hand.tracked), (Side::Right, false));
+    let id = hand.id;
+    assert_eq!(app.world().resource::<InteractionEntities>().hand(id), Some(entity));
+    assert_eq!(app.world().get::<Children>(entity).unwrap().len(), 16, "its bones");
+    app.world_mut().get_mut::<HandInput>(entity).unwrap().set_pose(closed_claw());
     app.update();
-    assert_eq!(interaction(&app).world().hand_pose(hand), Some(&closed));
+    assert_eq!(interaction(&app).world().hand_pose(id), Some(&closed_claw()));
+    assert!(app.world().get::<InteractionHand>(entity).unwrap().tracked);
     let began = app.world().resource::<Seen>().began.clone();
-    // The thumb's and the four fingers' pads press into the cube's faces.
-    assert!(began.len() >= 5 && began.iter().all(|c| c.object == cube), "{began:?}");
-    inlet.push(None);
+    let cube_entity = app.world().resource::<InteractionEntities>().object(cube).unwrap();
+    // The thumb's and the four fingers' pads press into the cube's faces,
+    // each message naming the app's hand and a bone of it.
+    assert!(began.len() >= 5, "{began:?}");
+    for b in &began {
+        assert_eq!((b.object, b.hand), (cube_entity, entity));
+        assert_eq!(app.world().get::<ChildOf>(b.bone).unwrap().parent(), entity);
+        assert_eq!(app.world().get::<HandBone>(b.bone).unwrap().bone, b.kind);
+    }
+    app.world_mut().get_mut::<HandInput>(entity).unwrap().set(None);
     app.update();
-    assert_eq!(interaction(&app).world().hand_pose(hand), None);
-    let entity = app.world().resource::<InteractionEntities>().hand(hand).unwrap();
+    assert_eq!(interaction(&app).world().hand_pose(id), None);
     assert!(!app.world().get::<InteractionHand>(entity).unwrap().tracked);
     let ended = &app.world().resource::<Seen>().ended;
     assert_eq!(ended.len(), began.len(), "every contact ends when tracking is lost");
     assert!(app.world().resource::<Contacts>().0.is_empty());
 }
 
+/// What the cube's observers saw, in order.
+#[derive(Resource, Default)]
+struct CubeEvents(Vec<(&'static str, Entity, f64)>);
+
+#[test]
+fn an_object_is_touched_once_by_its_first_bone_and_released_once_by_its_last() {
+    let (world, cube) = cube_world();
+    let mut app = app(HandPhysics::new(world), Duration::from_millis(10));
+    app.init_resource::<CubeEvents>();
+    let hand = app.world_mut().spawn(AppHand::new(Side::Left)).id();
+    app.update();
+    let cube_entity = app.world().resource::<InteractionEntities>().object(cube).unwrap();
+    app.world_mut()
+        .entity_mut(cube_entity)
+        .observe(|e: On<ObjectTouched>, mut seen: ResMut<CubeEvents>| {
+            seen.0.push(("touched", e.contact.bone, e.contact.time));
+        })
+        .observe(|e: On<ObjectReleased>, mut seen: ResMut<CubeEvents>| {
+            seen.0.push(("released", e.contact.bone, e.contact.time));
+        });
+    // A left hand closing on the cube over 0.3 s, holding, then opening.
+    let pose_at = |closure: f32| coulomb_hands::run::demo::claw(0.025, closure, 0.002, 0.0);
+    for frame in 0..60 {
+        let t = frame as f32 * 0.01;
+        let closure = if t < 0.3 {
+            t / 0.3
+        } else if t < 0.4 {
+            1.0
+        } else {
+            1.0 - (t - 0.4) / 0.2
+        };
+        app.world_mut().get_mut::<HandInput>(hand).unwrap().set_pose(pose_at(closure.max(0.0)));
+        app.update();
+    }
+    let seen = &app.world().resource::<CubeEvents>().0;
+    let began = &app.world().resource::<Seen>().began;
+    let ended = &app.world().resource::<Seen>().ended;
+    assert!(
+        began.len() >= 2 && ended.len() == began.len(),
+        "{} began, {} ended",
+        began.len(),
+        ended.len()
+    );
+    // Touched when the first contact began, released when the last ended.
+    assert_eq!(seen.len(), 2, "{seen:?}");
+    assert_eq!(seen[0], ("touched", began[0].bone, began[0].time));
+    let last = ended.last().unwrap();
+    assert_eq!(seen[1], ("released", last.bone, last.time));
+    assert!(seen[1].2 > seen[0].2);
+}
+
 #[test]
 fn a_failed_step_stops_the_physics_not_the_app() {
     let (world, _) = cube_world();
-    let mut driven = Interaction::new(world);
+    let mut driven = HandPhysics::new(world);
     let pose = coulomb_hands::run::demo::claw_grasp(0.025, 0.0, 0.0);
     driven.add_hand(PoseFn::new(Side::Right, move |t| {
         let mut p = pose.clone();
@@ -239,24 +319,75 @@ fn a_failed_step_stops_the_physics_not_the_app() {
     assert!(interaction(&app).world().first_non_finite().is_none());
 }
 
+/// The `HandPhysicsReplaced` messages the app saw.
+#[derive(Resource, Default)]
+struct Replaced(Vec<u64>);
+
 #[test]
-fn a_new_interaction_replaces_the_entities_of_the_old() {
-    let mut app = app(Interaction::of_scenario(&scenario("grasp-lift")).unwrap(), Duration::ZERO);
+fn a_new_world_replaces_the_plugins_entities_and_keeps_the_apps_hands() {
+    let mut app = app(HandPhysics::of_scenario(&scenario("grasp-lift")).unwrap(), Duration::ZERO);
+    app.init_resource::<Replaced>().add_systems(
+        Update,
+        |mut seen: ResMut<Replaced>, mut m: MessageReader<HandPhysicsReplaced>| {
+            seen.0.extend(m.read().map(|r| r.serial));
+        },
+    );
+    let app_hand = app.world_mut().spawn(AppHand::new(Side::Right)).id();
     app.update();
+    let first = interaction(&app).serial();
     let old = app.world().resource::<InteractionEntities>().object(ObjectId(0)).unwrap();
+    let old_bones: Vec<Entity> = app.world().get::<Children>(app_hand).unwrap().to_vec();
     let (world, _) = cube_world();
-    let mut replacement = Interaction::new(world);
-    replacement.add_hand(PushedHand::new(Side::Left).0);
-    replacement.add_hand(PushedHand::new(Side::Right).0);
-    app.insert_non_send(replacement);
+    let mut replacement = HandPhysics::new(world);
+    replacement.add_hand(PoseFn::new(Side::Left, |_| None));
+    app.insert_resource(replacement);
     app.update();
+    let second = interaction(&app).serial();
+    assert_eq!(app.world().resource::<Replaced>().0, vec![first, second]);
     assert!(app.world().get_entity(old).is_err(), "the old cube's entity is gone");
+    assert!(old_bones.iter().all(|b| app.world().get_entity(*b).is_err()), "old bones gone");
     let mut objects = app.world_mut().query::<&InteractionObject>();
     assert_eq!(objects.iter(app.world()).count(), 1);
-    let mut hands = app.world_mut().query::<&InteractionHand>();
-    let sides: Vec<Side> = hands.iter(app.world()).map(|h| h.side).collect();
-    assert_eq!(sides.len(), 2, "{sides:?}");
-    assert!(sides.contains(&Side::Left) && sides.contains(&Side::Right));
+    // The scenario's hand went; the app's is a hand of the new world.
+    let mut hands = app.world_mut().query::<(Entity, &InteractionHand)>();
+    let hands: Vec<(Entity, InteractionHand)> =
+        hands.iter(app.world()).map(|(e, h)| (e, *h)).collect();
+    assert_eq!(hands.len(), 2, "{hands:?}");
+    let (_, mine) = hands.iter().find(|(e, _)| *e == app_hand).expect("the app's hand stays");
+    assert_eq!((mine.id, mine.side), (coulomb_hands::hand::HandId(1), Side::Right));
     let mut bones = app.world_mut().query::<&HandBone>();
-    assert_eq!(bones.iter(app.world()).count(), 32, "the old hand's bones went with it");
+    assert_eq!(bones.iter(app.world()).count(), 32, "the old hands' bones went with them");
+    // And it poses the new world.
+    app.world_mut().get_mut::<HandInput>(app_hand).unwrap().set_pose(closed_claw());
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(5)));
+    app.update();
+    assert_eq!(interaction(&app).world().hand_pose(mine.id), Some(&closed_claw()));
+    // Despawned, it is untracked in the world from the next step.
+    app.world_mut().entity_mut(app_hand).despawn();
+    app.update();
+    assert_eq!(interaction(&app).world().hand_pose(mine.id), None);
+    assert!(interaction(&app).world().contacts().iter().all(|c| c.hand != mine.id));
+}
+
+#[test]
+fn the_plugins_types_are_reflected_and_its_resource_is_send() {
+    fn send_sync<T: Send + Sync>() {}
+    send_sync::<HandPhysics>();
+    let mut app = app(HandPhysics::of_scenario(&scenario("grasp-lift")).unwrap(), Duration::ZERO);
+    app.update();
+    let registry = app.world().resource::<AppTypeRegistry>().read();
+    for name in ["InteractionHand", "HandBone", "InteractionObject", "AppHand", "HandInput"] {
+        let found = registry.iter().any(|t| t.type_info().type_path_table().ident() == Some(name));
+        assert!(found, "{name} is registered");
+    }
+    drop(registry);
+    let hand = interaction(&app).hands()[0].id;
+    let entity = app.world().resource::<InteractionEntities>().hand(hand).unwrap();
+    let component = app.world().get::<InteractionHand>(entity).unwrap();
+    // The core's Side, as an inspector sees it: an enum whose variant is the hand's side.
+    let field = bevy::reflect::structs::Struct::field(component, "side").expect("a side field");
+    let bevy::reflect::ReflectRef::Enum(side) = field.reflect_ref() else {
+        panic!("{} is not reflected as an enum", field.reflect_type_path())
+    };
+    assert_eq!(side.variant_name(), format!("{:?}", component.side));
 }

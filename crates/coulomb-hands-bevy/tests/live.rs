@@ -14,7 +14,7 @@ use coulomb_hands::scene::ObjectDesc;
 use coulomb_hands_bevy::CoulombHandsPlugin;
 use coulomb_hands_bevy::contacts::ContactBegan;
 use coulomb_hands_bevy::entities::{InteractionEntities, InteractionHand};
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::physics::HandPhysics;
 use std::net::TcpListener;
 use std::path::PathBuf;
 use std::sync::mpsc;
@@ -85,20 +85,20 @@ fn a_live_leap_hand_pushes_a_cube_and_the_app_never_waits_for_the_service() {
             world.add_object(&ObjectDesc::cuboid("cube", glam::Vec3::splat(0.025), 0.03, tip));
         let cube = cube.unwrap();
         let feed = LiveFeed::connect(&url, conversion, DEFAULT_GRACE).unwrap();
-        let mut driven = Interaction::new(world);
+        let mut driven = HandPhysics::new(world);
         let hand = driven.add_hand(feed.hand(Side::Right));
         let mut app = App::new();
         app.add_plugins((MinimalPlugins, CoulombHandsPlugin))
             .init_resource::<Began>()
             .add_systems(Update, count)
-            .insert_non_send(driven);
+            .insert_resource(driven);
         set_frame(&mut app, Duration::from_millis(10));
         // The service says nothing yet: frames go on, the physics steps,
         // and the hand is untracked.
         for _ in 0..6 {
             app.update();
         }
-        let steps = app.world().non_send::<Interaction>().steps();
+        let steps = app.world().resource::<HandPhysics>().steps();
         assert_eq!(steps, 50, "five 10 ms frames after the one that starts the clock");
         let entity = app.world().resource::<InteractionEntities>().hand(hand).unwrap();
         assert!(!app.world().get::<InteractionHand>(entity).unwrap().tracked);
@@ -119,7 +119,7 @@ fn a_live_leap_hand_pushes_a_cube_and_the_app_never_waits_for_the_service() {
             tracked += usize::from(app.world().get::<InteractionHand>(hand).unwrap().tracked);
         }
         let end = app.world().get::<Transform>(entity).unwrap().translation;
-        let interaction = app.world().non_send::<Interaction>();
+        let interaction = app.world().resource::<HandPhysics>();
         assert!(interaction.stopped().is_none(), "{:?}", interaction.stopped());
         let _ = done.send((tracked, app.world().resource::<Began>().0, end.distance(start)));
     });

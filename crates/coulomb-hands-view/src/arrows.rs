@@ -9,11 +9,13 @@
 //!
 //! Gizmos are drawn over the scene, so arrows inside an object stay visible.
 
+use crate::keys;
+use crate::sets::ViewerSystems;
 use bevy::prelude::*;
 use coulomb_hands::hand::{BoneShape, HandId, HandPose};
 use coulomb_hands::scene::ObjectId;
 use coulomb_hands_bevy::convert::to_bevy_vec3;
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::prelude::*;
 use std::collections::HashMap;
 
 /// Arrow length per newton of contact force (m/N).
@@ -41,8 +43,6 @@ type ContactKey = (HandId, usize, ObjectId);
 /// The contacts' bone points when last drawn, for their velocities.
 #[derive(Resource, Debug, Default)]
 pub struct ContactMotion {
-    /// The interaction they belong to.
-    serial: Option<u64>,
     /// The world time (s) the points are from.
     at: f64,
     /// Per contact: the point p then.
@@ -59,8 +59,8 @@ pub fn setup_gizmos(mut store: ResMut<GizmoConfigStore>) {
 }
 
 /// Tab shows or hides the skeleton.
-pub fn toggle_skeleton(keys: Res<ButtonInput<KeyCode>>, mut show: ResMut<ShowSkeleton>) {
-    if keys.just_pressed(KeyCode::Tab) {
+pub fn toggle_skeleton(input: Res<ButtonInput<KeyCode>>, mut show: ResMut<ShowSkeleton>) {
+    if keys::SKELETON.just_pressed(&input) {
         show.0 = !show.0;
     }
 }
@@ -75,15 +75,16 @@ fn arrow(gizmos: &mut Gizmos, from: Vec3, v: Vec3, scale: f32, color: Color) {
 
 /// Draws the force and motion arrows of every contact.
 pub fn draw_arrows(
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
     mut motion: ResMut<ContactMotion>,
     mut gizmos: Gizmos,
 ) {
-    let Some(interaction) = interaction else { return };
-    if motion.serial != Some(interaction.serial()) {
-        *motion = ContactMotion { serial: Some(interaction.serial()), ..default() };
+    let Some(physics) = physics else { return };
+    if replaced.read().last().is_some() {
+        *motion = ContactMotion::default();
     }
-    let world = interaction.world();
+    let world = physics.world();
     let t = world.time();
     let moved = t > motion.at;
     if moved || t < motion.at {
@@ -113,12 +114,12 @@ pub fn draw_arrows(
 /// Draws each tracked hand's bones as lines: the palm's box and each
 /// phalanx's axis, joint to joint.
 pub fn draw_skeleton(
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
     show: Res<ShowSkeleton>,
     mut gizmos: Gizmos,
 ) {
-    let Some(interaction) = interaction.filter(|_| show.0) else { return };
-    let world = interaction.world();
+    let Some(physics) = physics.filter(|_| show.0) else { return };
+    let world = physics.world();
     let poses = (0..world.hand_count()).filter_map(|i| world.hand_pose(HandId(i as u32)));
     poses.for_each(|pose: &HandPose| {
         for bone in coulomb_hands::hand::Bone::all() {
@@ -134,4 +135,19 @@ pub fn draw_skeleton(
             }
         }
     });
+}
+
+/// The arrows' and skeleton's systems.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ArrowsPlugin;
+
+impl Plugin for ArrowsPlugin {
+    fn build(&self, app: &mut App) {
+        crate::sets::configure(app);
+        app.init_resource::<ShowSkeleton>()
+            .init_resource::<ContactMotion>()
+            .add_systems(Startup, setup_gizmos)
+            .add_systems(PreUpdate, toggle_skeleton.in_set(ViewerSystems::Input))
+            .add_systems(Update, (draw_arrows, draw_skeleton).in_set(ViewerSystems::Draw));
+    }
 }

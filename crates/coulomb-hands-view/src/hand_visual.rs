@@ -14,13 +14,14 @@
 //! the world with the object's current pose, the thesis's
 //! `T_HandMesh = T_HandMesh⁻¹ · T_VirtualObject`.
 
+use crate::sets::ViewerSystems;
 use bevy::prelude::*;
 use coulomb_hands::contact::Contact;
 use coulomb_hands::hand::{Bone, HandId, HandPose};
 use coulomb_hands::pipeline::InteractionWorld;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::entities::{BoneSize, bone_transform};
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::entities::bone_transform;
+use coulomb_hands_bevy::prelude::*;
 use std::collections::HashMap;
 
 /// Opacity of a hand that touches nothing (the thesis's "semi-transparent").
@@ -120,8 +121,6 @@ pub struct DrawnBone {
 /// opaque) and its grip (drawn frozen).
 #[derive(Resource, Default)]
 pub struct DrawnHands {
-    /// The interaction they were drawn for.
-    serial: Option<u64>,
     /// Per hand: its grip, whether it is in contact, its material, its
     /// bones' entities.
     hands: Vec<DrawnHand>,
@@ -135,19 +134,21 @@ pub struct DrawnHands {
 /// at the step its contact first presses whatever the frame rate.
 #[derive(Resource, Debug, Default)]
 pub struct Grips {
-    /// The interaction they belong to.
-    serial: Option<u64>,
     /// Per hand, in the world's order.
     pub grips: Vec<Option<Grip>>,
 }
 
 /// After each physics step: every hand's next grip ([`next_grip`]).
-pub fn track_grips(interaction: Option<NonSend<Interaction>>, mut grips: ResMut<Grips>) {
-    let Some(interaction) = interaction else { return };
-    if grips.serial != Some(interaction.serial()) {
-        *grips = Grips { serial: Some(interaction.serial()), grips: Vec::new() };
+pub fn track_grips(
+    physics: Option<Res<HandPhysics>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
+    mut grips: ResMut<Grips>,
+) {
+    let Some(physics) = physics else { return };
+    if replaced.read().last().is_some() {
+        grips.grips.clear();
     }
-    let world = interaction.world();
+    let world = physics.world();
     grips.grips.resize(world.hand_count(), None);
     for (i, grip) in grips.grips.iter_mut().enumerate() {
         let id = HandId(i as u32);
@@ -177,7 +178,7 @@ impl DrawnHands {
 /// Poses every hand's bones, frozen in its grip or as tracked, and sets its
 /// opacity from its contacts.
 pub fn draw_hands(
-    interaction: Option<NonSend<Interaction>>,
+    (physics, mut replaced): (Option<Res<HandPhysics>>, MessageReader<HandPhysicsReplaced>),
     grips: Res<Grips>,
     mut drawn: ResMut<DrawnHands>,
     mut meshes: ResMut<Assets<Mesh>>,
@@ -185,15 +186,14 @@ pub fn draw_hands(
     mut bones: Query<(&DrawnBone, &mut Transform, &mut Mesh3d, &mut Visibility)>,
     mut commands: Commands,
 ) {
-    let Some(interaction) = interaction else { return };
+    let Some(physics) = physics else { return };
     let drawn = &mut *drawn;
-    if drawn.serial != Some(interaction.serial()) {
-        drawn.serial = Some(interaction.serial());
+    if replaced.read().last().is_some() {
         for hand in drawn.hands.drain(..) {
             hand.bones.into_iter().for_each(|e| commands.entity(e).despawn());
         }
     }
-    let world = interaction.world();
+    let world = physics.world();
     let cube = drawn.cube.get_or_insert_with(|| meshes.add(Cuboid::from_length(1.0))).clone();
     while drawn.hands.len() < world.hand_count() {
         let id = HandId(drawn.hands.len() as u32);
@@ -258,4 +258,19 @@ fn material(opaque: bool) -> StandardMaterial {
         (SKIN.with_alpha(FREE_ALPHA), AlphaMode::Blend)
     };
     StandardMaterial { base_color: color, alpha_mode, perceptual_roughness: 0.7, ..default() }
+}
+
+/// The drawn hands' systems: grips after each physics step, bones each
+/// frame. Headless apps add [`track_grips`] alone.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct HandVisualPlugin;
+
+impl Plugin for HandVisualPlugin {
+    fn build(&self, app: &mut App) {
+        crate::sets::configure(app);
+        app.init_resource::<Grips>()
+            .init_resource::<DrawnHands>()
+            .add_systems(HandPhysicsStep, track_grips.after(HandPhysicsSystems::Step))
+            .add_systems(Update, draw_hands.in_set(ViewerSystems::Draw));
+    }
 }

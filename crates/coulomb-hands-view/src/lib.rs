@@ -2,12 +2,21 @@
 //! visualization (§3.6), force and motion arrows (Fig. 1.1), a HUD,
 //! playback controls and a hand driven by mouse and keyboard.
 //!
-//! The data path is the plugin's ([`coulomb_hands_bevy`]): the interaction
-//! steps once per fixed tick, whatever the frame rate; this crate only
-//! draws it ([`stage`], [`hand_visual`], [`arrows`], [`hud`]), decides
-//! whether a tick steps ([`transport`]), and poses the mouse hand
-//! ([`mouse_hand`]) or takes an XR runtime's hands ([`xr_hands`], with
-//! the runtime itself in `openxr` under the `openxr` feature).
+//! The data path is the plugin's ([`coulomb_hands_bevy`]): the physics
+//! steps once per tick of its own clock, whatever the frame rate. This crate
+//! is layered, one plugin per module, in the order of [`ViewerSystems`]:
+//!
+//! - input and playback: [`keys`] (every binding, in one table),
+//!   [`transport`] (pause, speed, seek, restart: it owns them, others ask
+//!   by message), [`task`] (the chessboard task);
+//! - the viewer's own hands: [`mouse_hand`], [`xr_hands`] (with the runtime
+//!   itself in `openxr` under the `openxr` feature);
+//! - the picture: [`camera`], [`stage`], [`hand_visual`], [`arrows`],
+//!   [`sound`], [`ar`]; then [`hud`], whose lines each module writes, and
+//!   [`timing`].
+//!
+//! A new world (a restart, a seek back) is the plugin's one message,
+//! [`coulomb_hands_bevy::physics::HandPhysicsReplaced`].
 
 pub mod ar;
 pub mod arrows;
@@ -16,22 +25,27 @@ pub mod display;
 pub mod hand_visual;
 pub mod head;
 pub mod hud;
+pub mod keys;
 pub mod mouse_hand;
 #[cfg(feature = "openxr")]
 pub mod openxr;
 pub mod ready;
+pub mod sets;
 pub mod shapes;
 pub mod sound;
 pub mod source;
 pub mod stage;
+pub mod stereo;
 pub mod task;
+pub mod timing;
 pub mod transport;
 pub mod xr_hands;
 
-use bevy::app::{RunFixedMainLoop, RunFixedMainLoopSystems};
 use bevy::prelude::*;
 use coulomb_hands::pipeline::Method;
-use coulomb_hands_bevy::{CoulombHandsPlugin, InteractionSystems};
+use coulomb_hands_bevy::CoulombHandsPlugin;
+use coulomb_hands_bevy::input::AppHand;
+pub use sets::ViewerSystems;
 use source::{LoadError, Source};
 use transport::{Shot, Transport, Viewed};
 
@@ -66,18 +80,15 @@ pub struct Viewer {
 
 impl Viewer {
     /// The app: a window, the plugin, and the viewer's systems, with the
-    /// interaction built and ready at t = 0.
+    /// world built and ready at t = 0, and the camera framing its run.
     pub fn app(self) -> Result<App, LoadError> {
-        let (interaction, inlets) = self.source.build(self.method)?;
+        let physics = self.source.build(self.method)?;
+        let framing = camera::Framing::of_run(&self.source, self.method)?;
         let head = self.source.head().copied();
-        let live_xr = inlets.xr.is_some();
+        let live_xr = self.source.app_hands().iter().any(|h| h.1 == source::HandDriver::Xr);
         let mut transport = Transport::new(self.source.duration(), self.shots, self.exit_after);
         transport.paused = self.paused;
         transport.live = self.source.is_live();
-        let mut hand = mouse_hand::MouseHand::default();
-        hand.attach(inlets.mouse);
-        let mut xr = xr_hands::XrHands::default();
-        xr.attach(inlets.xr);
         let window = Window {
             title: format!("coulomb-hands-view: {}", self.source.name()),
             resolution: (1280u32, 720u32).into(),
@@ -89,21 +100,19 @@ impl Viewer {
             .set(render_plugin())
             .disable::<bevy::audio::AudioPlugin>();
         let mut app = App::new();
-        app.add_plugins((
-            with_runtime(plugins, live_xr)?,
-            CoulombHandsPlugin,
-            ViewerPlugin,
-            ready::RendererReadyPlugin,
-        ))
-        .insert_non_send(interaction)
-        .insert_resource(transport)
-        .insert_resource(hand)
-        .insert_resource(xr)
-        .insert_resource(self.room)
-        .insert_resource(Viewed { source: self.source, method: self.method });
+        app.add_plugins((with_runtime(plugins, live_xr)?, CoulombHandsPlugin));
+        spawn_app_hands(&mut app, &self.source);
+        app.add_plugins((ViewerPlugin { task: self.task.is_some() }, ready::RendererReadyPlugin))
+            .insert_resource(physics)
+            .insert_resource(transport)
+            .insert_resource(self.room)
+            .insert_resource(Viewed { source: self.source, method: self.method });
         app.insert_resource(arrows::ShowSkeleton(self.skeleton));
         let play = !self.mute && sound::audio_device_present();
         app.add_plugins(sound::SoundPlugin { play });
+        if let Some(framing) = framing {
+            app.insert_resource(framing);
+        }
         if let Some(view) = self.view {
             app.insert_resource(view);
         }
@@ -125,6 +134,31 @@ impl Viewer {
         }
 
         Ok(app)
+    }
+}
+
+/// A headless app of `source` under `method`, for tests and tools that run
+/// the viewer's logic with no display: Bevy's minimal plugins and input,
+/// the coulomb-hands plugin, the transport (playing, to the source's end)
+/// and the mouse hand, with the world built and the source's app hands
+/// spawned. Nothing is drawn.
+pub fn headless_app(source: Source, method: Method) -> Result<App, LoadError> {
+    let physics = source.build(method)?;
+    let mut app = App::new();
+    app.add_plugins((MinimalPlugins, bevy::input::InputPlugin, CoulombHandsPlugin))
+        .add_plugins((transport::TransportPlugin, mouse_hand::MouseHandPlugin));
+    spawn_app_hands(&mut app, &source);
+    app.insert_resource(physics)
+        .insert_resource(Transport::new(source.duration(), Vec::new(), None))
+        .insert_resource(Viewed { source, method });
+    Ok(app)
+}
+
+/// Spawns the hands `source` has the viewer pose itself (the mouse hand, an
+/// XR runtime's two), as app hands that outlive every rebuilt world.
+pub fn spawn_app_hands(app: &mut App, source: &Source) {
+    for (side, driver) in source.app_hands() {
+        app.world_mut().spawn((AppHand::new(*side), *driver));
     }
 }
 
@@ -158,64 +192,29 @@ fn with_runtime(
 pub const NO_OPENXR: &str = "--openxr: this viewer was built without OpenXR; build it with \
      `cargo run -p coulomb-hands-view --release --features openxr -- --openxr`";
 
-/// The viewer's systems (it expects [`Transport`], [`Viewed`] and
-/// [`mouse_hand::MouseHand`] inserted, and the plugin added).
+/// The viewer's plugins, one per module (it expects [`Transport`] and
+/// [`Viewed`] inserted, and the coulomb-hands plugin added).
 #[derive(Debug, Clone, Copy, Default)]
-pub struct ViewerPlugin;
+pub struct ViewerPlugin {
+    /// Whether the chessboard task runs.
+    pub task: bool,
+}
 
 impl Plugin for ViewerPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<hand_visual::DrawnHands>()
-            .init_resource::<hand_visual::Grips>()
-            .init_resource::<arrows::ShowSkeleton>()
-            .init_resource::<arrows::ContactMotion>()
-            .init_resource::<stage::Scenery>()
-            .init_resource::<hud::StepTimer>()
-            .init_resource::<hud::Scrubbing>()
-            .init_resource::<task::BoardTiles>()
-            .add_plugins((transport::TransportPlugin, xr_hands::XrHandsPlugin))
-            .add_systems(
-                FixedUpdate,
-                (
-                    hud::start_step.before(InteractionSystems::Step),
-                    (hud::stop_step, hand_visual::track_grips).after(InteractionSystems::Step),
-                ),
-            )
-            .add_systems(
-                RunFixedMainLoop,
-                (
-                    hud::start_fixed_loop.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
-                    hud::stop_fixed_loop.in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
-                ),
-            )
-            .add_systems(
-                Startup,
-                (camera::spawn_camera, stage::setup_lights, arrows::setup_gizmos, hud::spawn_hud),
-            )
-            .add_systems(
-                Update,
-                (
-                    hud::scrub_timeline.after(transport::playback_keys).before(transport::seek),
-                    task::finish_on_enter.after(transport::playback_keys).before(transport::seek),
-                    arrows::toggle_skeleton,
-                    mouse_hand::drive_mouse_hand.after(transport::seek),
-                    (camera::frame_view, camera::orbit_camera, camera::fit_eyes).chain(),
-                ),
-            )
-            .add_systems(
-                Update,
-                (
-                    stage::dress_scenery,
-                    stage::dress_objects,
-                    task::draw_board,
-                    hand_visual::draw_hands,
-                    arrows::draw_arrows,
-                    arrows::draw_skeleton,
-                    hud::update_hud,
-                    transport::take_shots,
-                    transport::exit_when_done,
-                )
-                    .after(transport::seek),
-            );
+        app.add_plugins((
+            transport::TransportPlugin,
+            timing::TimingPlugin,
+            hud::HudPlugin,
+            camera::CameraPlugin,
+            stage::StagePlugin,
+            hand_visual::HandVisualPlugin,
+            arrows::ArrowsPlugin,
+            mouse_hand::MouseHandPlugin,
+            xr_hands::XrHandsPlugin,
+        ));
+        if self.task {
+            app.add_plugins(task::TaskPlugin { draw: true });
+        }
     }
 }

@@ -1,26 +1,21 @@
 //! A hand driven by mouse and keyboard, for use without a tracker: the
 //! rig's adult right hand ([`HandRig::adult`]), posed each frame from the
-//! keys held and pushed to the interaction as a
-//! [`coulomb_hands_bevy::sources::PushedHand`]. It touches objects only
-//! through the friction contacts, like a tracked hand.
-//!
-//! | input | does |
-//! |---|---|
-//! | W / S, A / D | palm away from / towards the camera, left / right |
-//! | E / Q | palm up / down |
-//! | right-drag | palm across the view (left-right, up-down) |
-//! | Shift | slow (fine) motion |
-//! | J / L, I / K, U / O | turn the palm: yaw, pitch, roll |
-//! | G / H | curl / open all fingers |
-//! | 1 … 5 (Shift+1 … 5) | curl (open) one finger, thumb first |
-//! | T | oppose the thumb, or bring it back |
+//! keys held ([`crate::keys`]) and written to the input of its app hand
+//! (an entity with [`AppHand`] and [`HandDriver::Mouse`]). It touches
+//! objects only through the friction contacts, like a tracked hand. A new
+//! world (a restart, a seek back) starts it at its start pose again.
 
+use crate::hud::{HudLines, HudSection};
+use crate::keys::{self, Group};
+use crate::sets::ViewerSystems;
+use crate::source::HandDriver;
+use crate::transport::Transport;
 use bevy::input::mouse::AccumulatedMouseMotion;
 use bevy::prelude::*;
 use coulomb_hands::hand::rig::HandRig;
 use coulomb_hands::hand::{HandSample, Side};
 use coulomb_hands_bevy::convert;
-use coulomb_hands_bevy::sources::HandInlet;
+use coulomb_hands_bevy::prelude::*;
 
 /// Palm speed with the keys (m/s).
 pub const SPEED: f32 = 0.12;
@@ -39,11 +34,9 @@ pub const OPPOSE_RATE: f32 = 3.0;
 /// fingers away from the default camera, slightly curled.
 pub const START_PALM: Vec3 = Vec3::new(0.0, 0.15, -0.2);
 
-/// The mouse hand's state, and the inlet its poses go to (none when the
-/// viewed input has its own hands).
+/// The mouse hand's state.
 #[derive(Resource, Debug, Clone)]
 pub struct MouseHand {
-    inlet: Option<HandInlet>,
     /// Palm centre (world, m).
     pub palm: Vec3,
     /// Palm orientation: yaw, pitch, roll (rad) after palm-down.
@@ -60,7 +53,6 @@ pub struct MouseHand {
 impl Default for MouseHand {
     fn default() -> Self {
         MouseHand {
-            inlet: None,
             palm: START_PALM,
             turn: Vec3::ZERO,
             curl: [0.1; 5],
@@ -72,21 +64,6 @@ impl Default for MouseHand {
 }
 
 impl MouseHand {
-    /// Drives the hand of `inlet` (a restarted interaction's), from the
-    /// starting pose, which it pushes at once; `None` for an input with its
-    /// own hands.
-    pub fn attach(&mut self, inlet: Option<HandInlet>) {
-        *self = MouseHand { inlet, ..MouseHand::default() };
-        if let Some(inlet) = &self.inlet {
-            inlet.push(Some(self.sample()));
-        }
-    }
-
-    /// Whether there is a hand to drive.
-    pub fn active(&self) -> bool {
-        self.inlet.is_some()
-    }
-
     /// Palm orientation: palm down (normal −y), fingers +z, then turned.
     pub fn rotation(&self) -> Quat {
         let down = Quat::from_rotation_z(std::f32::consts::PI);
@@ -101,60 +78,105 @@ impl MouseHand {
     }
 }
 
+/// What a person drives the hand with: the keys, and the mouse if there is one.
+#[derive(bevy::ecs::system::SystemParam)]
+pub struct Controls<'w> {
+    keys: Res<'w, ButtonInput<KeyCode>>,
+    buttons: Option<Res<'w, ButtonInput<MouseButton>>>,
+    motion: Option<Res<'w, AccumulatedMouseMotion>>,
+}
+
 /// Moves, turns and curls the hand from the keys and mouse held this frame,
-/// and pushes its pose. Motion is relative to the camera's heading when
+/// and writes its pose. Motion is relative to the camera's heading when
 /// there is a camera. Rates are per second of simulated time (Bevy's
 /// virtual clock, which the playback speed scales), and the hand holds
 /// still while the playback is paused, so it never outruns the physics.
 pub fn drive_mouse_hand(
     mut hand: ResMut<MouseHand>,
-    keys: Res<ButtonInput<KeyCode>>,
-    buttons: Option<Res<ButtonInput<MouseButton>>>,
-    motion: Option<Res<AccumulatedMouseMotion>>,
+    mut inputs: Query<(&HandDriver, &mut HandInput), With<AppHand>>,
+    controls: Controls,
     cameras: Query<&GlobalTransform, With<Camera3d>>,
     time: Res<Time<Virtual>>,
-    transport: Option<Res<crate::transport::Transport>>,
+    transport: Option<Res<Transport>>,
 ) {
-    if !hand.active() || transport.is_some_and(|t| t.paused) {
+    let Some(mut input) = inputs.iter_mut().find(|(d, _)| **d == HandDriver::Mouse).map(|x| x.1)
+    else {
+        return;
+    };
+    if transport.is_some_and(|t| t.paused) {
         return;
     }
+    let Controls { keys: held, buttons, motion } = controls;
     let dt = time.delta_secs();
-    let held = |k: KeyCode| if keys.pressed(k) { 1.0 } else { 0.0 };
-    let axis = |plus: KeyCode, minus: KeyCode| held(plus) - held(minus);
-    let fine = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+    let fine = keys::FINE.held(&held);
     let (forward, right) = heading(cameras.iter().next());
     let speed = if fine { FINE_SPEED } else { SPEED };
-    let along = axis(KeyCode::KeyW, KeyCode::KeyS) * forward
-        + axis(KeyCode::KeyD, KeyCode::KeyA) * right
-        + axis(KeyCode::KeyE, KeyCode::KeyQ) * Vec3::Y;
+    let along = keys::AWAY.axis(&held) * forward
+        + keys::SIDEWAYS.axis(&held) * right
+        + keys::UP.axis(&held) * Vec3::Y;
     hand.palm += along * speed * dt;
     let dragging = buttons.is_some_and(|b| b.pressed(MouseButton::Right));
     if let (true, Some(motion)) = (dragging, motion) {
         let scale = if fine { DRAG * FINE_SPEED / SPEED } else { DRAG };
         hand.palm += (motion.delta.x * right - motion.delta.y * Vec3::Y) * scale;
     }
-    let turn = Vec3::new(
-        axis(KeyCode::KeyJ, KeyCode::KeyL),
-        axis(KeyCode::KeyI, KeyCode::KeyK),
-        axis(KeyCode::KeyO, KeyCode::KeyU),
-    );
+    let turn = Vec3::new(keys::YAW.axis(&held), keys::PITCH.axis(&held), keys::ROLL.axis(&held));
     hand.turn += turn * TURN * dt;
-    let all = axis(KeyCode::KeyG, KeyCode::KeyH);
-    let digits = [KeyCode::Digit1, KeyCode::Digit2, KeyCode::Digit3, KeyCode::Digit4];
-    let digits = [digits[0], digits[1], digits[2], digits[3], KeyCode::Digit5];
-    for (f, digit) in digits.into_iter().enumerate() {
-        let own = if keys.pressed(digit) { if fine { -1.0 } else { 1.0 } } else { 0.0 };
+    let all = keys::CURL.axis(&held);
+    for (f, digit) in keys::FINGER.keys.iter().enumerate() {
+        let own = if held.pressed(*digit) { if fine { -1.0 } else { 1.0 } } else { 0.0 };
         hand.curl[f] = (hand.curl[f] + (all + own) * CURL_RATE * dt).clamp(0.0, 1.0);
     }
-    if keys.just_pressed(KeyCode::KeyT) {
+    if keys::THUMB.just_pressed(&held) {
         hand.opposing = !hand.opposing;
     }
     let target = if hand.opposing { 1.0 } else { 0.0 };
     let step = OPPOSE_RATE * dt;
     hand.opposition += (target - hand.opposition).clamp(-step, step);
-    let sample = hand.sample();
-    if let Some(inlet) = &hand.inlet {
-        inlet.push(Some(sample));
+    input.set(Some(hand.sample()));
+}
+
+/// A new world starts the hand over at its start pose, written at once.
+pub fn restart_mouse_hand(
+    mut replaced: MessageReader<HandPhysicsReplaced>,
+    mut hand: ResMut<MouseHand>,
+    mut inputs: Query<(&HandDriver, &mut HandInput), With<AppHand>>,
+) {
+    if replaced.read().last().is_none() {
+        return;
+    }
+    *hand = MouseHand::default();
+    for (_, mut input) in inputs.iter_mut().filter(|(d, _)| **d == HandDriver::Mouse) {
+        input.set(Some(hand.sample()));
+    }
+}
+
+/// The HUD's lines: the hand's keys, when there is a mouse hand.
+fn hud_lines(drivers: Query<&HandDriver, With<AppHand>>, mut hud: ResMut<HudLines>) {
+    let lines = match drivers.iter().any(|d| *d == HandDriver::Mouse) {
+        true => vec![
+            format!("hand: {}", keys::hud_line(Group::Hand, false)),
+            format!("      {}", keys::hud_line(Group::Fingers, false)),
+        ],
+        false => Vec::new(),
+    };
+    hud.set(HudSection::MouseHand, lines);
+}
+
+/// The mouse hand's systems (it expects the plugin added).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct MouseHandPlugin;
+
+impl Plugin for MouseHandPlugin {
+    fn build(&self, app: &mut App) {
+        crate::sets::configure(app);
+        app.init_resource::<MouseHand>()
+            .init_resource::<HudLines>()
+            .add_systems(
+                Update,
+                (restart_mouse_hand, drive_mouse_hand).chain().in_set(ViewerSystems::Drive),
+            )
+            .add_systems(Update, hud_lines.in_set(ViewerSystems::HudLines));
     }
 }
 

@@ -14,8 +14,7 @@ use bevy::prelude::*;
 use coulomb_hands::contact::ContactEventKind;
 use coulomb_hands::hand::{BoneShape, HandId, HandPose};
 use coulomb_hands::pipeline::InteractionWorld;
-use coulomb_hands_bevy::InteractionSystems;
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::prelude::*;
 use std::collections::VecDeque;
 use std::path::Path;
 
@@ -72,9 +71,7 @@ pub struct ContactSound {
     /// Every hand's pose in each of the last steps, oldest first, for the
     /// bones' speeds.
     history: VecDeque<Vec<Option<HandPose>>>,
-    /// The interaction those poses belong to.
-    serial: Option<u64>,
-    /// Its step count when last heard: the events are the last step's, so
+    /// The world's step count when last heard: the events are the last step's, so
     /// a tick with no step (paused, held at a screenshot) has none new.
     steps: Option<usize>,
 }
@@ -98,23 +95,25 @@ impl Plugin for SoundPlugin {
             let mut sources = app.world_mut().resource_mut::<Assets<AudioSource>>();
             sound.tap = Some(sources.add(AudioSource { bytes: bytes.into() }));
         }
-        app.insert_resource(sound).add_systems(FixedUpdate, listen.after(InteractionSystems::Step));
+        app.insert_resource(sound)
+            .add_systems(HandPhysicsStep, listen.after(HandPhysicsSystems::Step));
     }
 }
 
 /// After each physics step: a tap for each contact that began in it.
 fn listen(
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
     mut sound: ResMut<ContactSound>,
     pending: Query<(), (With<AudioPlayer>, Without<AudioSink>)>,
     mut commands: Commands,
 ) {
-    let Some(interaction) = interaction else { return };
-    let world = interaction.world();
-    if sound.serial != Some(interaction.serial()) {
-        (sound.serial, sound.history) = (Some(interaction.serial()), VecDeque::new());
+    let Some(physics) = physics else { return };
+    let world = physics.world();
+    if replaced.read().last().is_some() {
+        sound.history = VecDeque::new();
     }
-    let steps = interaction.steps();
+    let steps = physics.steps();
     match sound.steps.replace(steps) {
         Some(last) if last == steps => return,
         // Steps the viewer took itself (a seek): no speeds across that jump.

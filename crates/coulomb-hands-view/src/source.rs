@@ -2,7 +2,7 @@
 //! or a scene driven by the mouse-and-keyboard hand, an XR runtime's hands
 //! or a Leap Motion service's. Each is loaded and
 //! checked once, by the core's own loaders (so a bad file is the same error
-//! as in the CLI), and can build a fresh [`Interaction`] from the start any
+//! as in the CLI), and can build a fresh [`HandPhysics`] from the start any
 //! number of times: a timeline scrub back in time replays from t = 0, which
 //! is exact because a run is deterministic.
 
@@ -17,8 +17,7 @@ use coulomb_hands::run::live::LiveFeed;
 use coulomb_hands::run::replay::{GraspObject, replay_world};
 use coulomb_hands::run::scenario::{Scenario, ScenarioHand};
 use coulomb_hands::scene::Scene;
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_bevy::sources::{HandInlet, PushedHand};
+use coulomb_hands_bevy::physics::HandPhysics;
 use std::path::Path;
 
 /// The scene the viewer opens with no argument: a few objects on a table
@@ -103,13 +102,14 @@ impl LoadOptions {
     }
 }
 
-/// The hands the app poses itself, by what poses them.
-#[derive(Debug, Clone, Default)]
-pub struct Inlets {
-    /// The mouse-and-keyboard hand's.
-    pub mouse: Option<HandInlet>,
-    /// The XR runtime's left and right hands'.
-    pub xr: Option<[HandInlet; 2]>,
+/// What poses a hand the viewer's own systems track: a component on its
+/// [`coulomb_hands_bevy::input::AppHand`] entity.
+#[derive(bevy::prelude::Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HandDriver {
+    /// The mouse and keyboard ([`crate::mouse_hand`]).
+    Mouse,
+    /// An XR runtime's hand tracking ([`crate::xr_hands`]).
+    Xr,
 }
 
 /// Why a recording's options were refused for another input.
@@ -222,63 +222,58 @@ impl Source {
         }
     }
 
-    /// A fresh interaction at t = 0 under `method`, and the inlets of the
-    /// hands the app poses.
-    pub fn build(&self, method: Method) -> Result<(Interaction, Inlets), LoadError> {
+    /// A fresh world at t = 0 under `method`, with the hands it poses
+    /// itself (a scenario's, a recording's, a live stream's). The hands the
+    /// viewer's systems pose are [`Source::app_hands`].
+    pub fn build(&self, method: Method) -> Result<HandPhysics, LoadError> {
         match self {
             Source::Scenario(s) => {
                 let mut scenario = (**s).clone();
                 scenario.config = method.config(scenario.config);
-                Ok((Interaction::of_scenario(&scenario)?, Inlets::default()))
+                Ok(HandPhysics::of_scenario(&scenario)?)
             }
             Source::Recording { playback, scene, object, .. } => {
                 // The CLI's replay world: a ground at y = 0, then the scene.
-                let mut interaction = Interaction::new(world(scene.as_ref(), method, true)?);
+                let mut physics = HandPhysics::new(world(scene.as_ref(), method, true)?);
                 for track in 0..playback.tracks.len() {
-                    interaction
-                        .add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
+                    physics.add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
                 }
                 if let Some(object) = object {
-                    interaction.observe(Closings::new(playback, *object)?);
+                    physics.observe(Closings::new(playback, *object)?);
                 }
-                Ok((interaction, Inlets::default()))
-            }
-            Source::LiveXr { scene, .. } => {
-                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
-                let xr = [Side::Left, Side::Right].map(|side| {
-                    let (hand, inlet) = PushedHand::new(side);
-                    interaction.add_hand(hand);
-                    inlet
-                });
-                Ok((interaction, Inlets { mouse: None, xr: Some(xr) }))
+                Ok(physics)
             }
             Source::LiveLeap { scene, feed, .. } => {
                 // Each build's hands tie their clock to the stream afresh
                 // (both on one tie): a restart plays on from the newest
                 // frames.
-                let mut interaction = Interaction::new(world(Some(scene), method, false)?);
+                let mut physics = HandPhysics::new(world(Some(scene), method, false)?);
                 for hand in feed.hands() {
-                    interaction.add_hand(hand);
+                    physics.add_hand(hand);
                 }
-                Ok((interaction, Inlets::default()))
+                Ok(physics)
             }
-            Source::Scene { scene, .. } => {
-                Ok(with_mouse_hand(Interaction::new(world(Some(scene), method, false)?)))
+            Source::LiveXr { scene, .. } | Source::Scene { scene, .. } => {
+                Ok(HandPhysics::new(world(Some(scene), method, false)?))
             }
             Source::Task { placement, .. } => {
                 let config = method.config(InteractionConfig::default());
                 let (world, _cube) = board::world(config, placement.start, placement.yaw)?;
-                Ok(with_mouse_hand(Interaction::new(world)))
+                Ok(HandPhysics::new(world))
             }
         }
     }
-}
 
-/// `interaction` with a right hand the mouse drives, and its inlet.
-fn with_mouse_hand(mut interaction: Interaction) -> (Interaction, Inlets) {
-    let (hand, inlet) = PushedHand::new(Side::Right);
-    interaction.add_hand(hand);
-    (interaction, Inlets { mouse: Some(inlet), xr: None })
+    /// The hands the viewer's own systems pose, as app hands that outlive
+    /// each rebuilt world: a scene's and the task's mouse hand, or an XR
+    /// runtime's two hands.
+    pub fn app_hands(&self) -> &'static [(Side, HandDriver)] {
+        match self {
+            Source::Scene { .. } | Source::Task { .. } => &[(Side::Right, HandDriver::Mouse)],
+            Source::LiveXr { .. } => &[(Side::Left, HandDriver::Xr), (Side::Right, HandDriver::Xr)],
+            Source::Scenario(_) | Source::Recording { .. } | Source::LiveLeap { .. } => &[],
+        }
+    }
 }
 
 /// A world under `method` with `scene` in it, on the replays' ground at

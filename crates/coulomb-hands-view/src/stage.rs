@@ -1,12 +1,12 @@
 //! The scene's look: lights, the static scenery, and a mesh for every
 //! object the plugin spawns, each drawn from the object's own colliders.
 
+use crate::sets::ViewerSystems;
 use crate::shapes;
 use bevy::prelude::*;
 use coulomb_hands::pipeline::InteractionWorld;
 use coulomb_hands_bevy::convert;
-use coulomb_hands_bevy::entities::InteractionObject;
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::prelude::*;
 
 /// Object colours, in the order objects were added: cool hues, so the
 /// skin-toned hand and the red force arrows stand out against them.
@@ -26,12 +26,9 @@ pub const BACKGROUND: Color = Color::srgb(0.09, 0.10, 0.13);
 #[derive(Component, Debug, Clone, Copy)]
 pub struct SceneryMesh;
 
-/// The static scenery drawn, for the interaction it belongs to.
+/// The static scenery drawn, for the world it belongs to.
 #[derive(Resource, Debug, Default)]
-pub struct Scenery {
-    serial: Option<u64>,
-    entities: Vec<Entity>,
-}
+pub struct Scenery(Vec<Entity>);
 
 /// The light: a sun from above one shoulder, with shadows, and a soft fill.
 pub fn setup_lights(mut commands: Commands) {
@@ -45,14 +42,14 @@ pub fn setup_lights(mut commands: Commands) {
 
 /// Gives each new object entity its meshes, as children.
 pub fn dress_objects(
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
     objects: Query<(Entity, &InteractionObject), Added<InteractionObject>>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
     mut commands: Commands,
 ) {
-    let Some(interaction) = interaction else { return };
-    let world = interaction.world();
+    let Some(physics) = physics else { return };
+    let world = physics.world();
     for (entity, object) in &objects {
         let color = PALETTE[object.0.0 as usize % PALETTE.len()];
         let material = materials.add(StandardMaterial { base_color: color, ..default() });
@@ -74,29 +71,39 @@ pub fn dress_objects(
     }
 }
 
-/// Draws the static scenery of a new interaction (the ground, a table).
+/// Draws the static scenery of a new world (the ground, a table).
 pub fn dress_scenery(
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
     mut scenery: ResMut<Scenery>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
     mut commands: Commands,
 ) {
-    let Some(interaction) = interaction else { return };
-    if scenery.serial == Some(interaction.serial()) {
-        return;
-    }
-    scenery.serial = Some(interaction.serial());
-    scenery.entities.drain(..).for_each(|e| commands.entity(e).despawn());
+    let (Some(physics), Some(_)) = (physics, replaced.read().last()) else { return };
+    scenery.0.drain(..).for_each(|e| commands.entity(e).despawn());
     let material = materials.add(StandardMaterial {
         base_color: SCENERY,
         perceptual_roughness: 0.9,
         ..default()
     });
-    for (place, mesh) in static_meshes(interaction.world()) {
+    for (place, mesh) in static_meshes(physics.world()) {
         let entity =
             (Mesh3d(meshes.add(mesh)), MeshMaterial3d(material.clone()), place, SceneryMesh);
-        scenery.entities.push(commands.spawn(entity).id());
+        scenery.0.push(commands.spawn(entity).id());
+    }
+}
+
+/// The stage's systems: lights, scenery and objects' meshes.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct StagePlugin;
+
+impl Plugin for StagePlugin {
+    fn build(&self, app: &mut App) {
+        crate::sets::configure(app);
+        app.init_resource::<Scenery>()
+            .add_systems(Startup, setup_lights)
+            .add_systems(Update, (dress_scenery, dress_objects).in_set(ViewerSystems::Draw));
     }
 }
 

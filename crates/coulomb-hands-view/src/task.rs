@@ -8,14 +8,17 @@
 //! shows a person's results beside the synthetic users'. The file is
 //! rewritten after every trial, so quitting early loses nothing.
 
+use crate::hud::{HudLines, HudSection};
+use crate::keys;
+use crate::sets::ViewerSystems;
 use crate::source::Source;
-use crate::transport::{Transport, Viewed};
+use crate::transport::{Pause, Restart};
 use bevy::prelude::*;
 use coulomb_hands::eval::board::{self, Placement};
 use coulomb_hands::eval::{AccuracyStudy, Trial, summarise, thesis_table};
 use coulomb_hands::pipeline::{InteractionWorld, Method};
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::interaction::Interaction;
+use coulomb_hands_bevy::prelude::*;
 use std::path::PathBuf;
 
 /// A trial ended sooner than this after it began (s) is ignored: a key
@@ -53,9 +56,9 @@ pub struct ChessboardTask {
     /// The last log write's failure, shown on the HUD.
     pub log_error: Option<String>,
     /// The trial's time before the world was last rebuilt (Home, ←), and
-    /// the world seen last: its serial and time (s).
+    /// the time of the world seen last (s).
     carried: f64,
-    seen: Option<(u64, f64)>,
+    seen: Option<f64>,
     /// The next rebuild starts the next trial, rather than restarting this one.
     next_trial: bool,
 }
@@ -122,19 +125,18 @@ impl ChessboardTask {
         Some(trial)
     }
 
-    /// Follows the world of the trial under way: when it is rebuilt from t =
-    /// 0 by a restart or a seek back, the time spent so far is carried, so
-    /// a trial's time is all the time it took.
-    pub fn watch(&mut self, serial: u64, time: f64) {
-        if let Some((last_serial, last_time)) = self.seen
-            && last_serial != serial
-        {
+    /// Follows the world of the trial under way, at `time` (s): when it
+    /// was `replaced` (rebuilt from t = 0 by a restart or a seek back) since
+    /// the last call, the time spent so far is carried, so a trial's time
+    /// is all the time it took.
+    pub fn watch(&mut self, replaced: bool, time: f64) {
+        if let (Some(last_time), true) = (self.seen, replaced) {
             match std::mem::take(&mut self.next_trial) {
                 true => self.carried = 0.0,
                 false => self.carried += last_time - time,
             }
         }
-        self.seen = Some((serial, time));
+        self.seen = Some(time);
     }
 
     /// Whether the log can be written: an existing file must be an accuracy
@@ -190,7 +192,7 @@ impl ChessboardTask {
     }
 
     /// The HUD's lines.
-    pub fn hud_lines(&self) -> Vec<String> {
+    pub fn lines(&self) -> Vec<String> {
         let total = self.placements.len();
         let mut lines = vec![match self.current() {
             Some((i, p)) => format!(
@@ -221,55 +223,63 @@ fn square_name((file, rank): (usize, usize)) -> String {
     format!("{}{}", (b'a' + file as u8) as char, rank + 1)
 }
 
-/// Enter ends the trial under way, logs it and sets up the next one.
-pub fn finish_on_enter(
-    keys: Res<ButtonInput<KeyCode>>,
+/// Follows the world's rebuilds ([`ChessboardTask::watch`]).
+pub fn watch_world(
     task: Option<ResMut<ChessboardTask>>,
-    interaction: Option<NonSend<Interaction>>,
-    mut viewed: ResMut<Viewed>,
-    mut transport: ResMut<Transport>,
+    physics: Option<Res<HandPhysics>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
 ) {
-    let (Some(mut task), Some(interaction)) = (task, interaction) else { return };
-    task.watch(interaction.serial(), interaction.world().time());
-    if !(keys.just_pressed(KeyCode::Enter) || keys.just_pressed(KeyCode::NumpadEnter)) {
+    let (Some(mut task), Some(physics)) = (task, physics) else { return };
+    task.watch(replaced.read().last().is_some(), physics.world().time());
+}
+
+/// Enter ends the trial under way, logs it and asks for the next one.
+pub fn finish_on_enter(
+    input: Res<ButtonInput<KeyCode>>,
+    task: Option<ResMut<ChessboardTask>>,
+    physics: Option<Res<HandPhysics>>,
+    mut restart: MessageWriter<Restart>,
+    mut pause: MessageWriter<Pause>,
+) {
+    let (Some(mut task), Some(physics)) = (task, physics) else { return };
+    if !keys::FINISH.just_pressed(&input) {
         return;
     }
-    let Some(trial) = task.finish(interaction.world()) else { return };
+    let Some(trial) = task.finish(physics.world()) else { return };
     let n = task.results.len();
     info!("trial {n}: error {:.1} mm in {:.1} s", trial.error * 1000.0, trial.time);
     if let Some(e) = &task.log_error {
         error!("the task's log was not written: {e}");
     }
-    if let (Some(_), Some(next)) = (task.current(), task.source()) {
-        viewed.source = next;
-        transport.seek = Some(0.0);
-    } else {
-        transport.paused = true;
+    match (task.current(), task.source()) {
+        (Some(_), Some(next)) => {
+            restart.write(Restart(Some(next)));
+        }
+        _ => {
+            pause.write(Pause(true));
+        }
     }
 }
 
-/// The board's squares, drawn for each trial's world, the target highlighted.
+/// The board's squares, drawn for each trial's world.
 #[derive(Resource, Debug, Default)]
-pub struct BoardTiles {
-    serial: Option<u64>,
-    entities: Vec<Entity>,
-}
+pub struct BoardTiles(Vec<Entity>);
 
-/// Draws the chessboard just above the ground, the target square in yellow.
+/// Draws the chessboard just above the ground for each new world, the
+/// target square in yellow.
 pub fn draw_board(
     task: Option<Res<ChessboardTask>>,
-    interaction: Option<NonSend<Interaction>>,
+    mut replaced: MessageReader<HandPhysicsReplaced>,
     mut tiles: ResMut<BoardTiles>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
     mut commands: Commands,
 ) {
-    let (Some(task), Some(interaction)) = (task, interaction) else { return };
-    if tiles.serial == Some(interaction.serial()) {
+    if replaced.read().last().is_none() {
         return;
     }
-    tiles.serial = Some(interaction.serial());
-    tiles.entities.drain(..).for_each(|e| commands.entity(e).despawn());
+    let Some(task) = task else { return };
+    tiles.0.drain(..).for_each(|e| commands.entity(e).despawn());
     let Some((_, placement)) = task.current() else { return };
     let tile = meshes.add(Plane3d::default().mesh().size(board::SQUARE, board::SQUARE));
     let mut colour = |c: Color| materials.add(StandardMaterial { base_color: c, ..default() });
@@ -285,7 +295,37 @@ pub fn draw_board(
             let at = board::square_center((file, rank)) + glam::Vec3::Y * 0.001;
             let place = Transform::from_translation(Vec3::new(at.x, at.y, at.z));
             let entity = commands.spawn((Mesh3d(tile.clone()), MeshMaterial3d(material), place));
-            tiles.entities.push(entity.id());
+            tiles.0.push(entity.id());
+        }
+    }
+}
+
+/// The HUD's lines of the session.
+fn hud_lines(task: Option<Res<ChessboardTask>>, mut hud: ResMut<HudLines>) {
+    if let Some(task) = task {
+        hud.set(HudSection::Task, task.lines());
+    }
+}
+
+/// The task's systems (it expects [`ChessboardTask`] inserted, and the
+/// transport's plugin added). Headless apps leave out [`draw_board`], which
+/// needs a renderer's assets.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TaskPlugin {
+    /// Whether the board is drawn.
+    pub draw: bool,
+}
+
+impl Plugin for TaskPlugin {
+    fn build(&self, app: &mut App) {
+        crate::sets::configure(app);
+        app.init_resource::<HudLines>()
+            .add_systems(PreUpdate, finish_on_enter.in_set(ViewerSystems::Input))
+            .add_systems(Update, watch_world.in_set(ViewerSystems::Drive))
+            .add_systems(Update, hud_lines.in_set(ViewerSystems::HudLines));
+        if self.draw {
+            app.init_resource::<BoardTiles>()
+                .add_systems(Update, draw_board.in_set(ViewerSystems::Draw));
         }
     }
 }

@@ -2,22 +2,29 @@
 //! a scenario or recording, screenshots at chosen simulated times, and
 //! quitting after one.
 //!
-//! The plugin steps the physics once per fixed tick; the transport only
-//! decides whether a tick steps ([`may_step`], a run condition on the
+//! The plugin steps the physics once per tick of its clock; the transport
+//! only decides whether a tick steps ([`may_step`], a run condition on the
 //! plugin's step set), so the physics of a viewed run is the headless
 //! run's, step for step. Speed scales Bevy's virtual clock. A seek back in
-//! time rebuilds the interaction from t = 0 and steps it to the target in
-//! one frame, which is exact because runs are deterministic. Live hands
-//! play in real time: no speed but 1×, and no going back or on.
+//! time rebuilds the world from t = 0 and steps it to the target in one
+//! frame, which is exact because runs are deterministic. Live hands play in
+//! real time: no speed but 1×, and no going back or on.
+//!
+//! The transport owns its state: other modules ask for a seek, a restart or
+//! a pause with the messages [`Seek`], [`Restart`] and [`Pause`].
 
+use crate::hud::{HudLines, HudSection};
+use crate::keys::{self, Group};
 use crate::ready::RendererReady;
+use crate::sets::ViewerSystems;
 use crate::source::Source;
+use crate::timing::StepTimer;
 use bevy::diagnostic::FrameCount;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
+use bevy::window::PrimaryWindow;
 use coulomb_hands::pipeline::Method;
-use coulomb_hands_bevy::InteractionSystems;
-use coulomb_hands_bevy::interaction::{Interaction, Stopped};
+use coulomb_hands_bevy::prelude::*;
 use std::collections::VecDeque;
 use std::path::PathBuf;
 use std::time::Duration;
@@ -67,6 +74,9 @@ pub struct Transport {
     pub speed: usize,
     /// One step is due although paused.
     step_once: bool,
+    /// A seek was applied this frame, which then takes no steps: the
+    /// frame shows the state sought.
+    sought: bool,
     /// A time to go to (s), set by the keys or the timeline.
     pub seek: Option<f64>,
     /// The end of a scenario or recording (s); a scene has none.
@@ -94,6 +104,7 @@ impl Transport {
             paused: false,
             speed,
             step_once: false,
+            sought: false,
             seek: None,
             end,
             live: false,
@@ -113,81 +124,131 @@ impl Transport {
     /// paused (or one step asked for), not at the end or the time to quit,
     /// and not at a screenshot's time.
     pub fn allows_step(&self, t: f64, dt: f64) -> bool {
-        let reached = |at: f64| t >= at - dt / 2.0;
+        let reached = |at: f64| reached(t, at, dt);
         let stop = self.end.is_some_and(reached) || self.exit_after.is_some_and(reached);
-        if stop || self.shots.front().is_some_and(|s| reached(s.at)) {
+        if stop || self.sought || self.shots.front().is_some_and(|s| reached(s.at)) {
             return false;
         }
         !self.paused || self.step_once
     }
 }
 
+/// Go to this simulated time (s): back replays from t = 0.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub struct Seek(pub f64);
+
+/// Start again from t = 0, with another source if one is given (the
+/// chessboard task's next trial).
+#[derive(Message, Debug, Clone)]
+pub struct Restart(pub Option<Source>);
+
+/// Pause (`true`) or play.
+#[derive(Message, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pause(pub bool);
+
+/// Whether a left-drag began on the timeline (so it scrubs, not orbits),
+/// and the time it last went to.
+#[derive(Resource, Debug, Default)]
+pub struct Scrubbing(pub bool, Option<f64>);
+
+/// The timeline's height (logical pixels).
+const TIMELINE_PX: f32 = 14.0;
+
+/// The timeline's filled part.
+#[derive(Component)]
+pub struct TimelineFill;
+
 /// The transport's systems: the run condition on the plugin's step set,
-/// the keys and the seek (it expects [`Transport`], [`Viewed`] and
-/// [`crate::mouse_hand::MouseHand`] inserted, and the plugin added).
+/// the keys, the timeline, the messages, screenshots and the exit (it
+/// expects [`Transport`] and [`Viewed`] inserted, and the plugin added).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct TransportPlugin;
 
 impl Plugin for TransportPlugin {
     fn build(&self, app: &mut App) {
-        app.configure_sets(FixedUpdate, InteractionSystems::Step.run_if(may_step))
-            .add_systems(FixedUpdate, spend_single_step.after(InteractionSystems::Step))
-            .add_systems(Update, (playback_keys, seek).chain());
+        crate::sets::configure(app);
+        app.add_message::<Seek>()
+            .add_message::<Restart>()
+            .add_message::<Pause>()
+            .init_resource::<Scrubbing>()
+            .init_resource::<StepTimer>()
+            .init_resource::<HudLines>()
+            .configure_sets(HandPhysicsStep, HandPhysicsSystems::Step.run_if(may_step))
+            .add_systems(HandPhysicsStep, spend_single_step.after(HandPhysicsSystems::Step))
+            .add_systems(Startup, spawn_timeline)
+            .add_systems(PreUpdate, (playback_keys, scrub_timeline).in_set(ViewerSystems::Input))
+            .add_systems(PreUpdate, apply_requests.in_set(ViewerSystems::Transport))
+            .add_systems(Update, (fill_timeline, hud_lines).in_set(ViewerSystems::HudLines))
+            .add_systems(
+                Update,
+                (take_shots, exit_when_done, end_frame).chain().in_set(ViewerSystems::Output),
+            );
     }
+}
+
+/// Whether `t` has reached `at`, within half a step `dt` (s).
+pub fn reached(t: f64, at: f64, dt: f64) -> bool {
+    t >= at - dt / 2.0
 }
 
 /// The run condition of the plugin's step set; with a renderer, the run
 /// starts once it draws everything ([`RendererReady`]).
 pub fn may_step(
     transport: Res<Transport>,
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
     renderer: Option<Res<RendererReady>>,
 ) -> bool {
     if renderer.is_some_and(|r| !r.started) {
         return false;
     }
-    interaction.is_some_and(|i| {
-        let world = i.world();
+    physics.is_some_and(|p| {
+        let world = p.world();
         transport.allows_step(world.time(), f64::from(world.config().dt))
     })
 }
 
-/// After a fixed tick: a single step is used up.
+/// After a tick: a single step is used up.
 pub fn spend_single_step(mut transport: ResMut<Transport>) {
     transport.step_once = false;
 }
 
-/// The playback keys: Space pauses, `.` steps once (pausing), `[` and `]`
-/// halve and double the speed, ← and → go back and on by a second (these
-/// four not with live hands), Home restarts.
+/// After the frame's steps: the next frame steps again after a seek.
+fn end_frame(mut transport: ResMut<Transport>) {
+    transport.sought = false;
+}
+
+/// The playback keys ([`keys`]): pause, one step (pausing), half and
+/// double speed, back and on by a second (these two not with live hands),
+/// restart.
 pub fn playback_keys(
-    keys: Res<ButtonInput<KeyCode>>,
+    input: Res<ButtonInput<KeyCode>>,
     mut transport: ResMut<Transport>,
     mut time: ResMut<Time<Virtual>>,
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
 ) {
-    let now = interaction.map_or(0.0, |i| i.world().time());
+    let now = physics.map_or(0.0, |p| p.world().time());
     let t = &mut *transport;
-    if keys.just_pressed(KeyCode::Space) {
+    if keys::PAUSE.just_pressed(&input) {
         t.paused = !t.paused;
     }
-    if keys.just_pressed(KeyCode::Period) {
+    if keys::STEP.just_pressed(&input) {
         (t.paused, t.step_once) = (true, true);
     }
     let replayed = !t.live;
-    if replayed && keys.just_pressed(KeyCode::BracketLeft) {
+    let pressed = |k: KeyCode| input.just_pressed(k);
+    if replayed && pressed(keys::SPEED.keys[0]) {
         t.speed = t.speed.saturating_sub(1);
     }
-    if replayed && keys.just_pressed(KeyCode::BracketRight) {
+    if replayed && pressed(keys::SPEED.keys[1]) {
         t.speed = (t.speed + 1).min(SPEEDS.len() - 1);
     }
-    if replayed && keys.just_pressed(KeyCode::ArrowLeft) {
+    if replayed && pressed(keys::SEEK.keys[0]) {
         t.seek = Some((now - 1.0).max(0.0));
     }
-    if replayed && keys.just_pressed(KeyCode::ArrowRight) {
+    if replayed && pressed(keys::SEEK.keys[1]) {
         t.seek = Some(now + 1.0);
     }
-    if keys.just_pressed(KeyCode::Home) {
+    if keys::RESTART.just_pressed(&input) {
         t.seek = Some(0.0);
     }
     if time.relative_speed() != t.speed() {
@@ -198,64 +259,186 @@ pub fn playback_keys(
     }
 }
 
-/// Goes to the time asked for: back by rebuilding from t = 0, then on by
-/// stepping, all in this frame (never past the end, the time to quit or the
-/// next screenshot). These steps write no contact messages. A scene's mouse
-/// hand is not replayed: going back restarts it at its start pose, and
-/// going on steps with the hand held still.
-pub fn seek(
+/// Applies the other modules' requests, then goes to the time asked for:
+/// back by rebuilding from t = 0, then on by stepping, all in this frame
+/// (never past the end, the time to quit or the next screenshot). These
+/// steps write no contact messages. A scene's mouse hand is not replayed:
+/// going back restarts it at its start pose, and going on steps with the
+/// hand held still.
+pub fn apply_requests(
+    (mut seeks, mut restarts, mut pauses): (
+        MessageReader<Seek>,
+        MessageReader<Restart>,
+        MessageReader<Pause>,
+    ),
     mut transport: ResMut<Transport>,
-    viewed: Res<Viewed>,
-    interaction: Option<NonSendMut<Interaction>>,
-    mut inlet: ResMut<crate::mouse_hand::MouseHand>,
-    xr: Option<ResMut<crate::xr_hands::XrHands>>,
+    mut viewed: ResMut<Viewed>,
+    physics: Option<ResMut<HandPhysics>>,
 ) {
-    let (Some(target), Some(mut interaction)) = (transport.seek.take(), interaction) else {
-        return;
-    };
+    if let Some(Pause(paused)) = pauses.read().last() {
+        transport.paused = *paused;
+    }
+    if let Some(Seek(to)) = seeks.read().last() {
+        transport.seek = Some(*to);
+    }
+    let mut rebuild = false;
+    for Restart(source) in restarts.read() {
+        if let Some(source) = source {
+            viewed.source = source.clone();
+        }
+        (transport.seek, rebuild) = (Some(0.0), true);
+    }
+    let (Some(target), Some(mut physics)) = (transport.seek.take(), physics) else { return };
+    transport.sought = true;
     // Never past the end, the time to quit or the next screenshot's time.
     let next_shot = transport.shots.front().map(|s| s.at);
     let limits = [transport.end, transport.exit_after, next_shot];
     let target = limits.into_iter().flatten().fold(target, f64::min);
-    let dt = f64::from(interaction.world().config().dt);
-    if target < interaction.world().time() - dt / 2.0 {
+    let dt = f64::from(physics.world().config().dt);
+    if rebuild || !reached(target, physics.world().time(), dt) {
         match viewed.source.build(viewed.method) {
-            Ok((fresh, inlets)) => {
-                *interaction = fresh;
-                inlet.attach(inlets.mouse);
-                if let Some(mut xr) = xr {
-                    xr.attach(inlets.xr);
-                }
-            }
+            Ok(fresh) => *physics = fresh,
             Err(e) => {
                 error!("could not restart: {e}");
                 return;
             }
         }
     }
-    while interaction.world().time() < target - dt / 2.0 && interaction.step() {}
+    while !reached(physics.world().time(), target, dt) && physics.step() {}
+}
+
+/// The timeline along the window's foot, for a run with an end.
+fn spawn_timeline(mut commands: Commands, transport: Res<Transport>) {
+    if transport.end.is_none() {
+        return;
+    }
+    let bar = Node {
+        position_type: PositionType::Absolute,
+        bottom: Val::Px(0.0),
+        left: Val::Px(0.0),
+        width: Val::Percent(100.0),
+        height: Val::Px(TIMELINE_PX),
+        ..default()
+    };
+    let fill = Node { width: Val::Percent(0.0), height: Val::Percent(100.0), ..default() };
+    commands.spawn((bar, BackgroundColor(Color::srgb(0.22, 0.23, 0.27)))).with_child((
+        fill,
+        BackgroundColor(Color::srgb(0.55, 0.62, 0.78)),
+        TimelineFill,
+    ));
+}
+
+/// Fills the timeline to the current time.
+fn fill_timeline(
+    transport: Res<Transport>,
+    physics: Option<Res<HandPhysics>>,
+    mut fill: Query<&mut Node, With<TimelineFill>>,
+) {
+    let (Some(end), Some(physics)) = (transport.end.filter(|e| *e > 0.0), physics) else {
+        return;
+    };
+    let t = physics.world().time();
+    for mut node in &mut fill {
+        node.width = Val::Percent((t / end * 100.0).clamp(0.0, 100.0) as f32);
+    }
+}
+
+/// A left press on the timeline seeks there, and dragging scrubs.
+///
+/// The bar spans the window, or in stereo the left eye's half, where the
+/// UI is laid out. A held button seeks again only when the cursor moves.
+pub fn scrub_timeline(
+    buttons: Res<ButtonInput<MouseButton>>,
+    windows: Query<&Window, With<PrimaryWindow>>,
+    stereo: Option<Res<crate::stereo::Stereo>>,
+    mut scrubbing: ResMut<Scrubbing>,
+    mut transport: ResMut<Transport>,
+) {
+    let Some(end) = transport.end else { return };
+    let Ok(window) = windows.single() else { return };
+    let width = if stereo.is_some() { window.width() / 2.0 } else { window.width() };
+    let cursor = window.cursor_position();
+    if buttons.just_pressed(MouseButton::Left) {
+        let on_bar = |c: Vec2| c.y >= window.height() - TIMELINE_PX && c.x <= width;
+        *scrubbing = Scrubbing(cursor.is_some_and(on_bar), None);
+    }
+    if !buttons.pressed(MouseButton::Left) {
+        scrubbing.0 = false;
+    }
+    if let (true, Some(c)) = (scrubbing.0, cursor) {
+        let to = f64::from((c.x / width).clamp(0.0, 1.0)) * end;
+        if scrubbing.1 != Some(to) {
+            (scrubbing.1, transport.seek) = (Some(to), Some(to));
+        }
+    }
+}
+
+/// The HUD's lines of the run: what runs, the time and state, the keys.
+fn hud_lines(
+    physics: Option<Res<HandPhysics>>,
+    (viewed, transport): (Res<Viewed>, Res<Transport>),
+    mut hud: ResMut<HudLines>,
+) {
+    let Some(physics) = physics else { return };
+    let world = physics.world();
+    let (t, dt) = (world.time(), f64::from(world.config().dt));
+    let end = transport.end.map_or(String::new(), |e| format!(" / {e:.3}"));
+    let state = match physics.stopped() {
+        Some(Stopped::Failed(e)) => format!("STOPPED: {e}"),
+        Some(Stopped::Finished) => "finished".to_string(),
+        None if transport.end.is_some_and(|e| reached(t, e, dt)) => "at the end".to_string(),
+        None if transport.paused => "paused".to_string(),
+        None => format!("playing {}x", transport.speed()),
+    };
+    hud.set(
+        HudSection::Run,
+        vec![
+            format!("{} | method {}", viewed.source.name(), viewed.method.name()),
+            format!("t {t:.3}{end} s | step {} | {state}", physics.steps()),
+        ],
+    );
+    let live = if transport.live { "live hands at 1x | " } else { "" };
+    let keys = format!("{live}{}", keys::hud_line(Group::Playback, transport.live));
+    hud.set(HudSection::Keys, vec![keys]);
+    if let Some(feed) = viewed.source.leap_feed() {
+        hud.set(HudSection::LiveHands, vec![leap_line(&feed.stats())]);
+    }
+}
+
+/// What the live Leap stream has sent, and whether it still runs.
+pub fn leap_line(stats: &coulomb_hands::run::live::LiveStats) -> String {
+    let state = match (&stats.error, stats.closed, stats.newest) {
+        (Some(e), ..) => format!("FAILED: {e}"),
+        (None, true, _) => "closed".to_string(),
+        (None, false, None) => "waiting for the first frame".to_string(),
+        (None, false, Some(t)) => format!("newest frame at {t:.2} s"),
+    };
+    format!(
+        "Leap: {} frames, {} hands seen, {} skipped, {} dropped | {state}",
+        stats.frames, stats.hands_seen, stats.skipped, stats.dropped
+    )
 }
 
 /// Takes the next screenshot once the physics is held at its time and a
 /// few frames have drawn that state with every pipeline ready.
 pub fn take_shots(
     mut transport: ResMut<Transport>,
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
     renderer: Option<Res<RendererReady>>,
     mut commands: Commands,
 ) {
     /// Frames drawn at the held state, ready, before the capture.
     const SETTLE_FRAMES: u32 = 3;
-    let Some(interaction) = interaction else { return };
+    let Some(physics) = physics else { return };
     if renderer.is_some_and(|r| !r.ready()) && transport.shot_frames < SETTLE_FRAMES {
         transport.shot_frames = 0;
         return;
     }
-    let world = interaction.world();
+    let world = physics.world();
     let (t, dt) = (world.time(), f64::from(world.config().dt));
     let Some(shot) = transport.shots.front().cloned() else { return };
-    let at_end = transport.end.is_some_and(|end| t >= end - dt / 2.0);
-    if t < shot.at - dt / 2.0 && !at_end && interaction.stopped().is_none() {
+    let at_end = transport.end.is_some_and(|end| reached(t, end, dt));
+    if !reached(t, shot.at, dt) && !at_end && physics.stopped().is_none() {
         return;
     }
     transport.shot_frames += 1;
@@ -283,10 +466,10 @@ fn save_png(image: &Image, path: &std::path::Path) -> Result<(), String> {
 /// and every screenshot is saved; a failed step exits with an error.
 pub fn exit_when_done(
     transport: Res<Transport>,
-    interaction: Option<NonSend<Interaction>>,
+    physics: Option<Res<HandPhysics>>,
     frames: Res<FrameCount>,
     time: Res<Time<Real>>,
-    timer: Res<crate::hud::StepTimer>,
+    timer: Res<StepTimer>,
     mut exit: MessageWriter<AppExit>,
 ) {
     if let Some(e) = &transport.failed {
@@ -294,24 +477,24 @@ pub fn exit_when_done(
         exit.write(AppExit::error());
         return;
     }
-    let (Some(after), Some(interaction)) = (transport.exit_after, interaction) else { return };
-    if let Some(Stopped::Failed(e)) = interaction.stopped() {
+    let (Some(after), Some(physics)) = (transport.exit_after, physics) else { return };
+    if let Some(Stopped::Failed(e)) = physics.stopped() {
         eprintln!("error: the run failed: {e}");
         exit.write(AppExit::error());
         return;
     }
-    let world = interaction.world();
+    let world = physics.world();
     let (t, dt) = (world.time(), f64::from(world.config().dt));
     let last = transport.end.map_or(after, |end| after.min(end));
-    let stuck = interaction.stopped().is_some();
-    if (t >= last - dt / 2.0 || stuck) && transport.shots.is_empty() {
+    let stuck = physics.stopped().is_some();
+    if (reached(t, last, dt) || stuck) && transport.shots.is_empty() {
         let wall = time.elapsed_secs_f64();
         eprintln!(
             "coulomb-hands-view: {} frames in {wall:.1} s ({:.1} per s), {} physics steps of \
-             {:.1} µs ({:.1} µs per fixed tick)",
+             {:.1} µs ({:.1} µs per tick)",
             frames.0,
             f64::from(frames.0) / wall,
-            interaction.steps(),
+            physics.steps(),
             timer.mean_us,
             timer.tick_us,
         );

@@ -3,10 +3,11 @@
 //! Each frame, bevy_mod_xr's hand trackers hold the 26 joints the runtime
 //! located (bevy_mod_openxr fills them, with the `openxr` feature: see
 //! `crate::openxr`). Here they become a tracked hand by the core's
-//! OpenXR layout ([`layouts::from_openxr`]), then the skeletal hand
-//! ([`hand_pose`]), pushed to a [`coulomb_hands_bevy::sources::PushedHand`]
-//! of the interaction. The hand then touches objects only through the
-//! friction contacts, like any tracked hand.
+//! OpenXR layout ([`coulomb_hands::input::layouts::from_openxr`]), then the skeletal hand
+//! ([`coulomb_hands_bevy::input::openxr_sample`]), written to the input of
+//! the app hand of that side (with [`HandDriver::Xr`]). The hand then
+//! touches objects only through the friction contacts, like any tracked
+//! hand.
 //!
 //! A hand with an untracked joint, or one the layout or the pose check
 //! refuses, is pushed as lost: its contacts end, as in a tracker dropout.
@@ -14,16 +15,16 @@
 //! This module needs no XR runtime: it reads bevy_mod_xr's components,
 //! whoever wrote them, so its tests drive it with joints of their own.
 
+use crate::hud::{HudLines, HudSection};
+use crate::source::HandDriver;
 use bevy::prelude::*;
 use bevy_mod_xr::hands::{HAND_JOINT_COUNT, HandSide, XrHandBoneEntities, XrHandBoneRadius};
 use bevy_mod_xr::session::XrTrackingRoot;
 use bevy_mod_xr::spaces::{XrSpaceLocationFlags, XrSpaceSyncSet};
-use coulomb_hands::hand::{HandSample, Side};
-use coulomb_hands::input::convert::Conversion;
-use coulomb_hands::input::layouts::{self, Joint, openxr};
-use coulomb_hands::input::skeleton::hand_pose;
+use coulomb_hands::hand::Side;
+use coulomb_hands::input::layouts::{Joint, openxr};
 use coulomb_hands_bevy::convert::{to_core_quat, to_core_vec3};
-use coulomb_hands_bevy::sources::HandInlet;
+use coulomb_hands_bevy::prelude::*;
 
 // bevy_mod_xr's bone order is XrHandJointEXT's, as the core's layout expects.
 const _: () = assert!(HAND_JOINT_COUNT == openxr::COUNT);
@@ -77,11 +78,9 @@ pub fn place_room(
     }
 }
 
-/// The interaction's XR hands (left, then right) and what became of the
-/// joints pushed to them.
+/// What became of the joints written to the XR hands.
 #[derive(Resource, Debug, Clone, Default)]
 pub struct XrHands {
-    inlets: Option<[HandInlet; 2]>,
     /// Whether each hand (left, right) was tracked in the last frame.
     pub tracked: [bool; 2],
     /// Frames whose joints were all tracked but made no valid hand.
@@ -89,30 +88,12 @@ pub struct XrHands {
 }
 
 impl XrHands {
-    /// Drives the hands of `inlets` (a restarted interaction's), lost
-    /// until their joints come.
-    pub fn attach(&mut self, inlets: Option<[HandInlet; 2]>) {
-        *self = XrHands { inlets, ..XrHands::default() };
-    }
-
-    /// The HUD's line: whether each hand is tracked now, if the hands are
-    /// live.
-    pub fn hud_line(&self) -> Option<String> {
+    /// The HUD's line: whether each hand is tracked now.
+    pub fn hud_line(&self) -> String {
         let state = |tracked: bool| if tracked { "tracked" } else { "lost" };
-        self.inlets.as_ref()?;
         let [left, right] = self.tracked.map(state);
-        Some(format!("XR hands: left {left}, right {right}"))
+        format!("XR hands: left {left}, right {right}")
     }
-}
-
-/// The skeletal hand of one frame's 26 joints (world, m, in
-/// `XrHandJointEXT` order), or why there is none.
-pub fn sample(side: Side, joints: &[Joint; openxr::COUNT]) -> Result<HandSample, String> {
-    let id = i64::from(side == Side::Right);
-    let hand = layouts::from_openxr(id, side, joints).map_err(|e| e.to_string())?;
-    let pose = hand_pose(&hand, &Conversion::identity()).map_err(|e| e.to_string())?;
-    pose.validate(0).map_err(|e| e.to_string())?;
-    Ok(HandSample::from_pose(pose))
 }
 
 /// The core's side of bevy_mod_xr's.
@@ -148,33 +129,52 @@ fn world_joints(
     Some(out)
 }
 
-/// Pushes each hand's pose from the joints the runtime located this
+/// Writes each XR hand's pose from the joints the runtime located this
 /// frame (after bevy_mod_xr's space sync, so the physics steps of this
-/// frame see them), or pushes it lost.
+/// frame see them), or writes it lost.
 pub fn push_xr_hands(
-    hands: Option<ResMut<XrHands>>,
+    mut hands: ResMut<XrHands>,
+    mut inputs: Query<(&AppHand, &HandDriver, &mut HandInput)>,
     trackers: Query<(&XrHandBoneEntities, &HandSide)>,
     joints: Query<(&Transform, &XrHandBoneRadius, &XrSpaceLocationFlags)>,
     roots: Query<&Transform, With<XrTrackingRoot>>,
 ) {
-    let Some(mut hands) = hands else { return };
-    let Some(inlets) = hands.inlets.clone() else { return };
     let root = roots.iter().next().copied().unwrap_or_default();
-    for (s, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+    for (hand, driver, mut input) in &mut inputs {
+        if *driver != HandDriver::Xr {
+            continue;
+        }
+        let side = hand.side;
         let bones = trackers.iter().find(|(_, h)| side_of(h) == side);
         let joints = bones.and_then(|(bones, _)| world_joints(bones, &joints, &root));
-        let pose = joints.map(|j| sample(side, &j));
-        if let Some(Err(why)) = &pose {
-            hands.refused += 1;
-            debug!("the {side:?} hand's joints made no hand: {why}");
-        }
-        let pose = pose.and_then(Result::ok);
-        let tracked = pose.is_some();
+        let tracked = match joints.map(|j| input.set_openxr(side, &j)) {
+            Some(Ok(())) => true,
+            Some(Err(why)) => {
+                hands.refused += 1;
+                debug!("the {side:?} hand's joints made no hand: {why}");
+                false
+            }
+            None => {
+                input.set(None);
+                false
+            }
+        };
+        let s = usize::from(side == Side::Right);
         if tracked != hands.tracked[s] {
             info!("the {side:?} hand is {}", if tracked { "tracked" } else { "lost" });
             hands.tracked[s] = tracked;
         }
-        inlets[s].push(pose);
+    }
+}
+
+/// The HUD's line, when there are XR hands.
+fn hud_line(
+    hands: Res<XrHands>,
+    drivers: Query<&HandDriver, With<AppHand>>,
+    mut hud: ResMut<HudLines>,
+) {
+    if drivers.iter().any(|d| *d == HandDriver::Xr) {
+        hud.set(HudSection::LiveHands, vec![hands.hud_line()]);
     }
 }
 
@@ -187,7 +187,9 @@ impl Plugin for XrHandsPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<RoomPlacement>()
             .init_resource::<XrHands>()
-            .add_systems(PreUpdate, (place_room, push_xr_hands).chain().after(XrSpaceSyncSet));
+            .init_resource::<HudLines>()
+            .add_systems(PreUpdate, (place_room, push_xr_hands).chain().after(XrSpaceSyncSet))
+            .add_systems(Update, hud_line.in_set(crate::sets::ViewerSystems::HudLines));
     }
 }
 
@@ -207,11 +209,7 @@ mod tests {
 
     #[test]
     fn the_hud_says_which_live_hand_is_tracked() {
-        let mut hands = XrHands::default();
-        assert_eq!(hands.hud_line(), None, "no live hands, no line");
-        let inlet = || coulomb_hands_bevy::sources::PushedHand::new(Side::Left).1;
-        hands.attach(Some([inlet(), inlet()]));
-        hands.tracked = [true, false];
-        assert_eq!(hands.hud_line().as_deref(), Some("XR hands: left tracked, right lost"));
+        let hands = XrHands { tracked: [true, false], refused: 0 };
+        assert_eq!(hands.hud_line(), "XR hands: left tracked, right lost");
     }
 }

@@ -16,9 +16,8 @@ use crate::input::convert::Conversion;
 use crate::input::live::LiveLeap;
 use crate::input::playback::interpolate;
 use crate::pipeline::InteractionWorld;
-use std::cell::RefCell;
 use std::collections::BTreeSet;
-use std::rc::Rc;
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 use tracks::Tracks;
 
 mod feed;
@@ -85,7 +84,7 @@ impl LiveTracks {
 /// One hand of a live stream: the stream is shared by both hands.
 pub struct LiveHand {
     /// The shared stream.
-    pub tracks: Rc<RefCell<LiveTracks>>,
+    pub tracks: Arc<Mutex<LiveTracks>>,
     /// Which hand.
     pub side: Side,
 }
@@ -96,12 +95,18 @@ impl HandSource for LiveHand {
     }
 
     fn sample(&mut self, t: f64) -> Result<Option<HandSample>, RunError> {
-        self.tracks.borrow_mut().sample(self.side, t)
+        lock(&self.tracks).sample(self.side, t)
     }
 
     fn finished(&self) -> bool {
-        self.tracks.borrow().closed
+        lock(&self.tracks).closed
     }
+}
+
+/// The stream both hands share. Sampling returns errors rather than
+/// panicking, so a poisoned lock is taken as it is, not panicked on again.
+fn lock(tracks: &Mutex<LiveTracks>) -> MutexGuard<'_, LiveTracks> {
+    tracks.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
 /// What a live run did.
@@ -137,15 +142,15 @@ pub fn run_live(
     seconds: f64,
     observers: &mut [&mut dyn Observer],
 ) -> Result<LiveSummary, RunError> {
-    let tracks = Rc::new(RefCell::new(LiveTracks::new(LiveLeap::connect(url)?, conversion, grace)));
+    let tracks = Arc::new(Mutex::new(LiveTracks::new(LiveLeap::connect(url)?, conversion, grace)));
     let mut summary = Summary::new(world)?;
     let steps = (seconds / world.config().dt as f64).ceil() as usize;
     let mut driver = Driver::new(world);
     for side in [Side::Left, Side::Right] {
-        driver.add_hand(LiveHand { tracks: Rc::clone(&tracks), side });
+        driver.add_hand(LiveHand { tracks: Arc::clone(&tracks), side });
     }
     driver.run(steps, &mut drive::observers(vec![&mut summary], observers))?;
-    let tracks = tracks.borrow();
+    let tracks = lock(&tracks);
     Ok(LiveSummary {
         url: url.to_string(),
         frames: tracks.stream.frames,

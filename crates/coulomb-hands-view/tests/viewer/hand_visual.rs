@@ -12,7 +12,7 @@ use coulomb_hands_view::source::{LoadOptions, Source};
 #[test]
 fn the_drawn_hand_freezes_at_the_first_press_and_rides_with_the_object() {
     let scenario = Source::load(Some("grasp-lift"), &LoadOptions::default()).expect("shipped");
-    let (mut interaction, _) = scenario.build(Method::Coulomb).expect("a world");
+    let mut interaction = scenario.build(Method::Coulomb).expect("a world");
     let mut grip: Option<Grip> = None;
     let (mut frozen_at, mut refined) = (None, 0);
     // 4.3 s of grasp, lift and hold, one frame per physics step.

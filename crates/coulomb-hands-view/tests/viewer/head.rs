@@ -63,7 +63,7 @@ fn a_head_mounted_recording_is_seen_from_the_eyes() {
         HeadPose { position: glam::Vec3::new(-0.3, 1.4, 0.6), yaw_deg: 35.0, pitch_deg: -25.0 };
     let mount = HeadMount { mount: MountPreset::OculusDk2, head };
     let source = load(&path, mount).expect("a Leap recording");
-    let (mut interaction, _) = source.build(Method::Coulomb).expect("a world");
+    let mut interaction = source.build(Method::Coulomb).expect("a world");
     for _ in 0..50 {
         assert!(interaction.step());
     }
@@ -90,8 +90,7 @@ fn a_head_mounted_recording_is_seen_from_the_eyes() {
     // The other mount: 7 cm up and 5 cm ahead, so the same hand sits 3 cm nearer and 7 cm
     // higher in the eyes' frame.
     let hololens = HeadMount { mount: MountPreset::HoloLens, head };
-    let (mut interaction, _) =
-        load(&path, hololens).expect("ok").build(Method::Coulomb).expect("ok");
+    let mut interaction = load(&path, hololens).expect("ok").build(Method::Coulomb).expect("ok");
     assert!(interaction.step());
     let pose = interaction.world().hand_pose(HandId(0)).expect("tracked").clone();
     let moved = local(pose.palm.center) - palm;

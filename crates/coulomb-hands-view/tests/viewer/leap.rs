@@ -4,7 +4,6 @@
 //! that is not there is an error before any window.
 
 use super::window::refused;
-use bevy::input::InputPlugin;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use coulomb_hands::hand::Side;
@@ -13,12 +12,11 @@ use coulomb_hands::input::leap;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::CoulombHandsPlugin;
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_view::hud::leap_line;
-use coulomb_hands_view::mouse_hand::MouseHand;
+use coulomb_hands_bevy::physics::HandPhysics;
+use coulomb_hands_view::headless_app;
 use coulomb_hands_view::source::{LoadOptions, Source};
-use coulomb_hands_view::transport::{Transport, TransportPlugin, Viewed};
+use coulomb_hands_view::transport::leap_line;
+use coulomb_hands_view::transport::{Transport, Viewed};
 use std::net::TcpListener;
 use std::path::PathBuf;
 use std::sync::mpsc;
@@ -55,8 +53,8 @@ fn paced() -> (String, mpsc::Sender<String>) {
     (url, tx)
 }
 
-fn interaction(app: &App) -> &Interaction {
-    app.world().non_send::<Interaction>()
+fn interaction(app: &App) -> &HandPhysics {
+    app.world().resource::<HandPhysics>()
 }
 
 /// Sends `frames[range]`, each followed by an app frame that lasts until
@@ -108,17 +106,12 @@ fn live_leap_hands_push_a_scenes_cube_and_a_restart_plays_on() {
     std::thread::spawn(move || {
         let scene = Source::load(scene.to_str(), &LoadOptions::default()).expect("a scene");
         let source = scene.live_leap(&url, device).expect("the service is there");
-        let (built, inlets) = source.build(Method::Coulomb).expect("a world");
-        assert!(inlets.mouse.is_none() && inlets.xr.is_none(), "the stream poses both hands");
-        let sides: Vec<Side> = built.hands().iter().map(|h| h.side).collect();
+        assert!(source.app_hands().is_empty(), "the stream poses both hands");
+        let mut app = headless_app(source, Method::Coulomb).expect("a world");
+        let sides: Vec<Side> = interaction(&app).hands().iter().map(|h| h.side).collect();
         assert_eq!(sides, [Side::Left, Side::Right]);
-        let start = built.world().object_state(ObjectId(0)).expect("the cube").position;
-        let mut app = App::new();
-        app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin, TransportPlugin))
-            .insert_non_send(built)
-            .insert_resource(Transport::new(source.duration(), Vec::new(), None))
-            .insert_resource(MouseHand::default())
-            .insert_resource(Viewed { source, method: Method::Coulomb });
+        let world = interaction(&app).world();
+        let start = world.object_state(ObjectId(0)).expect("the cube").position;
         app.update();
         stream(&mut app, &tx, &messages[..count], &micros[..count]);
         let world = interaction(&app).world();

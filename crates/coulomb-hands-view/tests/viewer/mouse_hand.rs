@@ -6,18 +6,19 @@
 //! as one does on screen, and holds keys for as long as that takes.
 
 use super::keys::key;
-use bevy::input::{ButtonState, InputPlugin};
+use bevy::input::ButtonState;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
+use coulomb_hands::hand::Side;
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::run::replay::is_squeezed;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::CoulombHandsPlugin;
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_view::mouse_hand::{MouseHand, drive_mouse_hand};
+use coulomb_hands_bevy::physics::HandPhysics;
+use coulomb_hands_view::headless_app;
+use coulomb_hands_view::mouse_hand::MouseHand;
 use coulomb_hands_view::sound::{ContactSound, SoundPlugin, loudness};
-use coulomb_hands_view::source::{LoadOptions, Source};
-use coulomb_hands_view::transport::{Transport, TransportPlugin, Viewed, seek};
+use coulomb_hands_view::source::{HandDriver, LoadOptions, Source};
+use coulomb_hands_view::transport::Transport;
 use std::time::Duration;
 
 /// One frame (s): the app runs at 100 frames per second.
@@ -33,20 +34,11 @@ fn desk() -> App {
 /// An app of `source` with the mouse hand, the transport and the taps, at
 /// 100 frames per second.
 pub fn app_of(source: Source) -> App {
-    let (interaction, inlets) = source.build(Method::Coulomb).expect("a world");
-    assert!(inlets.mouse.is_some(), "a scene has a mouse hand");
-    let mut hand = MouseHand::default();
-    hand.attach(inlets.mouse);
-    let mut app = App::new();
+    assert!(source.app_hands().contains(&(Side::Right, HandDriver::Mouse)), "a mouse hand");
+    let mut app = headless_app(source, Method::Coulomb).expect("a world");
     // Silent, as with no audio device: the taps are worked out, not played.
-    let sound = SoundPlugin { play: false };
-    app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin, TransportPlugin, sound))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(FRAME)))
-        .insert_non_send(interaction)
-        .insert_resource(hand)
-        .insert_resource(Transport::new(source.duration(), Vec::new(), None))
-        .insert_resource(Viewed { source, method: Method::Coulomb })
-        .add_systems(Update, drive_mouse_hand.after(seek));
+    app.add_plugins(SoundPlugin { play: false })
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(FRAME)));
     app.update();
     app
 }
@@ -84,7 +76,7 @@ pub fn hand(app: &App) -> &MouseHand {
 }
 
 pub fn cube(app: &App) -> glam::Vec3 {
-    let world = app.world().non_send::<Interaction>();
+    let world = app.world().resource::<HandPhysics>();
     world.world().object_state(CUBE).expect("the cube").position
 }
 
@@ -193,7 +185,7 @@ fn the_hand_grasps_lifts_and_drops_the_cube() {
     // Curl the index and middle fingers until the cube is squeezed against
     // the thumb, and a little more for a firm grip.
     let squeezed = |a: &App| {
-        let i = a.world().non_send::<Interaction>();
+        let i = a.world().resource::<HandPhysics>();
         is_squeezed(i.world(), CUBE)
     };
     let pinch = [KeyCode::Digit2, KeyCode::Digit3];

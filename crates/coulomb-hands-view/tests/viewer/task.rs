@@ -9,9 +9,8 @@ use bevy::prelude::*;
 use coulomb_hands::eval::board::{Placement, square_center};
 use coulomb_hands::eval::{AccuracyStudy, Trial, summarise, thesis_table};
 use coulomb_hands::pipeline::Method;
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_view::task::{ChessboardTask, TaskOptions, finish_on_enter};
-use coulomb_hands_view::transport::{playback_keys, seek};
+use coulomb_hands_bevy::physics::HandPhysics;
+use coulomb_hands_view::task::{ChessboardTask, TaskOptions, TaskPlugin};
 use std::path::Path;
 
 fn task(app: &App) -> &ChessboardTask {
@@ -41,8 +40,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
     let options = TaskOptions { trials: 2, seed: 0, log: Some(log.clone()), person: "ada".into() };
     let session = ChessboardTask::new(options, Method::Coulomb, vec![first, second]);
     let mut app = app_of(session.source().expect("a trial"));
-    app.insert_resource(session)
-        .add_systems(Update, finish_on_enter.after(playback_keys).before(seek));
+    app.insert_resource(session).add_plugins(TaskPlugin { draw: false });
 
     // The person: fingertips 3 cm behind the cube, down to 3 cm over the board, the
     // middle fingertip lined up with the cube (finely), then forward, watching the cube
@@ -61,7 +59,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
     hold(&mut app, &[KeyCode::KeyS], 0.3);
     hold(&mut app, &[], 0.2);
 
-    let world_time = app.world().non_send::<Interaction>().world().time();
+    let world_time = app.world().resource::<HandPhysics>().world().time();
     let at = cube(&app);
     let expected = ((at - target) * glam::Vec3::new(1.0, 0.0, 1.0)).length();
     assert!(at.z - start.z > 0.03, "the cube was pushed: {start} -> {at}");
@@ -85,7 +83,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
 
     // The next trial: a fresh board, the cube on its start square.
     app.update();
-    let world = app.world().non_send::<Interaction>().world();
+    let world = app.world().resource::<HandPhysics>().world();
     assert!(world.time() < 0.05, "restarted: t = {}", world.time());
     let next = square_center(second.start) + glam::Vec3::Y * 0.02;
     assert!((cube(&app) - next).length() < 0.001, "{} not at {next}", cube(&app));

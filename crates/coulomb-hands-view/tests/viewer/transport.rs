@@ -2,39 +2,31 @@
 //! same state, pausing stops the physics, and `.` steps it once.
 
 use super::keys::press;
-use bevy::input::InputPlugin;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::CoulombHandsPlugin;
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_view::mouse_hand::MouseHand;
+use coulomb_hands_bevy::physics::HandPhysics;
+use coulomb_hands_view::headless_app;
 use coulomb_hands_view::source::{LoadOptions, Source};
-use coulomb_hands_view::transport::{Transport, TransportPlugin, Viewed};
+use coulomb_hands_view::transport::Transport;
 use std::time::Duration;
 
 /// grasp-lift in an app with the transport, 7 ms frames.
 fn app() -> App {
     let source = Source::load(Some("grasp-lift"), &LoadOptions::default()).expect("shipped");
-    let (interaction, _) = source.build(Method::Coulomb).expect("a world");
-    let mut app = App::new();
-    app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin, TransportPlugin))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(7)))
-        .insert_non_send(interaction)
-        .insert_resource(Transport::new(source.duration(), Vec::new(), None))
-        .insert_resource(MouseHand::default())
-        .insert_resource(Viewed { source, method: Method::Coulomb });
+    let mut app = headless_app(source, Method::Coulomb).expect("a world");
+    app.insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(7)));
     app
 }
 
 fn time(app: &App) -> f64 {
-    app.world().non_send::<Interaction>().world().time()
+    app.world().resource::<HandPhysics>().world().time()
 }
 
 /// The cube's pose and velocity, as bits.
 fn cube(app: &App) -> Vec<u32> {
-    let i = app.world().non_send::<Interaction>();
+    let i = app.world().resource::<HandPhysics>();
     let s = i.world().object_state(ObjectId(0)).expect("the cube");
     [s.position.to_array(), s.linvel.to_array(), s.angvel.to_array()]
         .concat()

@@ -105,9 +105,15 @@ fn opaque_skin(img: &RgbImage) -> usize {
     count(img, |h, s, v| SKIN_HUES.contains(&h) && s > 0.3 && v > 0.7)
 }
 
+/// Whether a pixel's hue, saturation and value are the hand's skin tone,
+/// see-through or not.
+fn is_skin(h: f32, s: f32, v: f32) -> bool {
+    SKIN_HUES.contains(&h) && s > 0.12 && v > 0.2
+}
+
 /// Pixels of any skin-toned hue, see-through or not.
 pub fn any_skin(img: &RgbImage) -> usize {
-    count(img, |h, s, v| SKIN_HUES.contains(&h) && s > 0.12 && v > 0.2)
+    count(img, is_skin)
 }
 
 /// Pixels of the teal cube.
@@ -128,39 +134,59 @@ fn colours(img: &RgbImage) -> usize {
     seen.len()
 }
 
+/// The bounding box of the pixels that pass `test`: (left, top, right,
+/// bottom), or `None` if there are none.
+fn bounding_box(img: &RgbImage, test: impl Fn(&image::Rgb<u8>) -> bool) -> Option<[u32; 4]> {
+    let mut hits = img.enumerate_pixels().filter(|(_, _, p)| test(p));
+    let (x, y, _) = hits.next()?;
+    let grow = |[l, t, r, b]: [u32; 4], (x, y, _)| [l.min(x), t.min(y), r.max(x), b.max(y)];
+    Some(hits.fold([x, y, x, y], grow))
+}
+
+/// grasp-lift from the front left (where the hand does not hide the cube),
+/// at the distance that frames the whole run: the camera keeps the cube in
+/// the window, clear of its edges, from the approach through the lift (it
+/// ends 20 cm up) to the end; before contact the hand is see-through with
+/// no force arrow, while holding it is opaque with red force arrows.
 #[test]
-fn grasp_lift_draws_the_hand_see_through_then_opaque_with_force_arrows() {
+fn grasp_lift_stays_in_frame_see_through_then_opaque_with_force_arrows() {
     let dir = out_dir();
-    let (before, holding) = (dir.join("grasp-lift-0.5s.png"), dir.join("grasp-lift-2.5s.png"));
-    fresh(&[&before, &holding]);
-    let shot = |t: &str, p: &Path| format!("{t}={}", p.display());
-    let (ok, stderr) = view(&[
-        "grasp-lift",
-        // From the front left, where the hand does not hide the cube.
-        "--view=60,25,0.45",
-        "--screenshot",
-        &shot("0.5", &before),
-        "--screenshot",
-        &shot("2.5", &holding),
-        "--exit-after",
-        "2.5",
-    ]);
+    let times = ["0.3", "0.5", "1.2", "2.1", "2.5", "3.0", "3.9", "4.3"];
+    let paths: Vec<PathBuf> =
+        times.iter().map(|t| dir.join(format!("grasp-lift-{t}s.png"))).collect();
+    fresh(&paths.iter().map(PathBuf::as_path).collect::<Vec<_>>());
+    let mut args = vec!["grasp-lift".to_string(), "--view=60,25".into(), "--exit-after=4.3".into()];
+    for (t, path) in times.iter().zip(&paths) {
+        args.push(format!("--screenshot={t}={}", path.display()));
+    }
+    let (ok, stderr) = view(&args.iter().map(String::as_str).collect::<Vec<_>>());
     assert!(ok, "the viewer failed:\n{stderr}");
     // With no audio device (as under CI) it is silent without a word: neither ALSA's
     // complaints nor Bevy's warning, since the audio output is never opened.
     let device = coulomb_hands_view::sound::audio_device_present();
     let quiet = !stderr.contains("ALSA") && !stderr.contains("No audio device");
     assert!(device || quiet, "no audio device, yet:\n{stderr}");
-    let before = image::open(&before).expect("the 0.5 s screenshot").to_rgb8();
-    let holding = image::open(&holding).expect("the 2.5 s screenshot").to_rgb8();
-    for img in [&before, &holding] {
-        assert!(colours(img) > 500, "not blank: {} colours", colours(img));
-        assert!(teal(img) > 400, "the cube is visible: {} teal pixels", teal(img));
-        assert!(any_skin(img) > 1000, "the hand is visible: {} skin pixels", any_skin(img));
+    let shots: Vec<RgbImage> =
+        paths.iter().map(|p| image::open(p).expect("a screenshot").to_rgb8()).collect();
+    for (t, img) in times.iter().zip(&shots) {
+        let (w, h) = img.dimensions();
+        assert!(colours(img) > 500, "{t} s: not blank: {} colours", colours(img));
+        assert!(any_skin(img) > 1000, "{t} s: the hand is visible: {} skin pixels", any_skin(img));
+        // The cube, where it is not behind the hand, and the hand that holds
+        // it, clear of the window's edges (the timeline along the foot is 14 px).
+        let clear = |[l, top, r, b]: [u32; 4]| l > 4 && top > 4 && r < w - 5 && b < h - 20;
+        let cube = bounding_box(img, is_teal).unwrap_or_else(|| panic!("{t} s: no cube"));
+        assert!(clear(cube), "{t} s: the cube at {cube:?}");
+        let skin = |p: &image::Rgb<u8>| matches!(hsv(p), (h, s, v) if is_skin(h, s, v));
+        let hand = bounding_box(img, skin).unwrap_or_else(|| panic!("{t} s: no hand"));
+        assert!(clear(hand), "{t} s: the hand at {hand:?}");
     }
-    assert_eq!(red(&before), 0, "no contact yet, no force arrow");
-    assert!(red(&holding) > 30, "force arrows while holding: {} red pixels", red(&holding));
-    let (free, held) = (opaque_skin(&before), opaque_skin(&holding));
+    // Before the grasp, nothing hides the cube: all its lit faces show.
+    assert!(teal(&shots[0]) > 400, "the cube is visible: {} teal pixels", teal(&shots[0]));
+    let (before, holding) = (&shots[1], &shots[4]);
+    assert_eq!(red(before), 0, "no contact yet, no force arrow");
+    assert!(red(holding) > 30, "force arrows while holding: {} red pixels", red(holding));
+    let (free, held) = (opaque_skin(before), opaque_skin(holding));
     assert!(
         held > 1000 && held > 10 * free,
         "opaque in contact: {held} vs {free} opaque skin pixels"

@@ -5,7 +5,6 @@
 //! interaction's hands from them. The hands are real: a Leap recording's
 //! right hand, turned into OpenXR joints.
 
-use bevy::input::InputPlugin;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy_mod_xr::hands::{
@@ -21,13 +20,11 @@ use coulomb_hands::input::skeleton::hand_pose;
 use coulomb_hands::input::{TrackedHand, recording};
 use coulomb_hands::pipeline::Method;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::CoulombHandsPlugin;
 use coulomb_hands_bevy::convert::{to_bevy_quat, to_bevy_vec3};
-use coulomb_hands_bevy::interaction::Interaction;
-use coulomb_hands_view::mouse_hand::MouseHand;
+use coulomb_hands_bevy::physics::HandPhysics;
+use coulomb_hands_view::headless_app;
 use coulomb_hands_view::sound::SoundPlugin;
 use coulomb_hands_view::source::{LoadOptions, Source};
-use coulomb_hands_view::transport::{Transport, TransportPlugin, Viewed};
 use coulomb_hands_view::xr_hands::{RoomPlacement, XrHands, XrHandsPlugin};
 use std::path::Path;
 use std::time::Duration;
@@ -47,20 +44,10 @@ const RIGHT: HandId = HandId(1);
 fn desk() -> (App, [Entity; openxr::COUNT]) {
     let source = Source::load(None, &LoadOptions::default()).and_then(Source::live_xr);
     let source = source.expect("the desk scene");
-    let (interaction, inlets) = source.build(Method::Coulomb).expect("a world");
-    let mut hands = XrHands::default();
-    hands.attach(inlets.xr);
-    let mut app = App::new();
-    app.add_plugins((MinimalPlugins, InputPlugin, CoulombHandsPlugin, TransportPlugin))
-        .add_plugins(XrHandsPlugin)
-        .add_plugins(SoundPlugin { play: false })
+    let mut app = headless_app(source, Method::Coulomb).expect("a world");
+    app.add_plugins((XrHandsPlugin, SoundPlugin { play: false }))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_secs_f32(FRAME)))
-        .insert_non_send(interaction)
-        .insert_resource(hands)
-        .insert_resource(MouseHand::default())
-        .insert_resource(RoomPlacement { origin: ORIGIN })
-        .insert_resource(Transport::new(source.duration(), Vec::new(), None))
-        .insert_resource(Viewed { source, method: Method::Coulomb });
+        .insert_resource(RoomPlacement { origin: ORIGIN });
     // What bevy_mod_xr's session plugin and bevy_mod_openxr's hand
     // tracking spawn: the tracking root, and a tracker with its bones.
     let world = app.world_mut();
@@ -114,11 +101,11 @@ fn real_hand(palm: glam::Vec3, normal: glam::Vec3, direction: glam::Vec3) -> Tra
 }
 
 fn right_pose(app: &App) -> Option<HandPose> {
-    app.world().non_send::<Interaction>().world().hand_pose(RIGHT).cloned()
+    app.world().resource::<HandPhysics>().world().hand_pose(RIGHT).cloned()
 }
 
 fn cube(app: &App) -> glam::Vec3 {
-    let interaction = app.world().non_send::<Interaction>();
+    let interaction = app.world().resource::<HandPhysics>();
     interaction.world().object_state(CUBE).expect("the cube").position
 }
 
@@ -153,7 +140,7 @@ fn xr_joints_pose_the_hand_where_it_was_tracked() {
     assert!((got.palm.half_extents - read.palm.half_extents).length() < 1e-3);
     // 1.06 m in the room is 13 cm above the desk.
     assert!((0.1..0.16).contains(&got.palm.center.y), "{}", got.palm.center);
-    let world = app.world().non_send::<Interaction>();
+    let world = app.world().resource::<HandPhysics>();
     assert!(world.world().hand_pose(HandId(0)).is_none(), "the left hand was never located");
     assert_eq!(app.world().resource::<XrHands>().tracked, [false, true]);
 }
@@ -178,7 +165,7 @@ fn a_swept_xr_hand_pushes_the_cube_and_a_lost_one_lets_go() {
     while x < 0.02 {
         locate(&mut app, &bones, &pose_at(x));
         app.update();
-        touched |= !app.world().non_send::<Interaction>().world().contacts_on(CUBE).is_empty();
+        touched |= !app.world().resource::<HandPhysics>().world().contacts_on(CUBE).is_empty();
         x += speed * FRAME;
     }
     let pushed = cube(&app) - start;
@@ -195,7 +182,7 @@ fn a_swept_xr_hand_pushes_the_cube_and_a_lost_one_lets_go() {
         x += speed * FRAME;
     }
     assert!(right_pose(&app).is_none(), "a hand with an untracked joint is lost");
-    let world = app.world().non_send::<Interaction>();
+    let world = app.world().resource::<HandPhysics>();
     assert!(world.world().contacts_on(CUBE).is_empty(), "a lost hand holds no contact");
     let after = cube(&app) - start;
     assert!(after.x - pushed.x < 0.01, "the cube stopped: {pushed} then {after}");

@@ -1,9 +1,5 @@
-//! [`Interaction`]: the app's interaction world and the core's driver that
-//! poses its hands and steps it, one step per fixed tick.
-//!
-//! It is kept in the app as non-send data (`App::insert_non_send`): hand
-//! sources need not be `Send` (a live stream's two hands share one
-//! connection), and the physics runs on the main thread anyway.
+//! [`HandPhysics`]: the app's interaction world and the core's driver that
+//! poses its hands and steps it, one step per tick of the plugin's clock.
 
 use coulomb_hands::hand::HandId;
 use coulomb_hands::pipeline::{InteractionWorld, WorldError};
@@ -11,11 +7,13 @@ use coulomb_hands::run::RunError;
 use coulomb_hands::run::drive::{Driver, HandFrame, HandSource, Observer};
 use coulomb_hands::run::scenario::Scenario;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, PoisonError};
+use std::time::Duration;
 
-/// The next [`Interaction`]'s serial number.
+/// The next [`HandPhysics`]'s serial number.
 static SERIAL: AtomicU64 = AtomicU64::new(0);
 
-/// Why the interaction stopped stepping.
+/// Why the physics stopped stepping.
 #[derive(Debug)]
 pub enum Stopped {
     /// Every hand source has finished (a live stream closed).
@@ -25,43 +23,62 @@ pub enum Stopped {
     Failed(RunError),
 }
 
+/// A new [`HandPhysics`] was inserted (the first, or one replacing
+/// another): the plugin has cleared the old world's entities. Views of the
+/// old world start over.
+#[derive(bevy::prelude::Message, bevy::prelude::Reflect, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct HandPhysicsReplaced {
+    /// The new world's [`HandPhysics::serial`].
+    pub serial: u64,
+}
+
 /// The interaction world of an app, with its hands' sources and its
-/// observers. The plugin steps it through [`Driver::step`], the body of the
-/// core's driver loop, so the app's physics is the headless runs' physics.
-pub struct Interaction {
+/// observers: the resource the plugin steps. It steps through
+/// [`Driver::step`], the body of the core's driver loop, so the app's
+/// physics is the headless runs' physics.
+///
+/// Insert it with `App::insert_resource`; inserting another replaces the
+/// world, and the plugin replaces its entities (and sends
+/// [`HandPhysicsReplaced`]).
+#[derive(bevy::prelude::Resource)]
+pub struct HandPhysics {
     driver: Driver<'static, InteractionWorld>,
-    observers: Vec<Box<dyn Observer>>,
+    /// Behind locks that are never taken, as the driver's sources are:
+    /// observers need only be `Send`.
+    observers: Vec<Mutex<Box<dyn Observer + Send>>>,
     stopped: Option<Stopped>,
-    /// Tells this interaction from one it replaced in an app.
+    /// Tells this world from one it replaced in an app.
     serial: u64,
 }
 
-impl Interaction {
+impl HandPhysics {
     /// Drives `world`, with no hands yet.
-    pub fn new(world: InteractionWorld) -> Interaction {
+    pub fn new(world: InteractionWorld) -> HandPhysics {
         let serial = SERIAL.fetch_add(1, Ordering::Relaxed);
-        Interaction { driver: Driver::new(world), observers: Vec::new(), stopped: None, serial }
+        HandPhysics { driver: Driver::new(world), observers: Vec::new(), stopped: None, serial }
     }
 
     /// A scenario's world, scene and hands (scripted or recorded).
-    pub fn of_scenario(scenario: &Scenario) -> Result<Interaction, WorldError> {
+    pub fn of_scenario(scenario: &Scenario) -> Result<HandPhysics, WorldError> {
         let mut world = InteractionWorld::new(scenario.config)?;
         world.add_scene(&scenario.scene)?;
-        let mut interaction = Interaction::new(world);
+        let mut physics = HandPhysics::new(world);
         for hand in &scenario.hands {
-            interaction.add_hand(hand.clone());
+            physics.add_hand(hand.clone());
         }
-        Ok(interaction)
+        Ok(physics)
     }
 
     /// Adds a hand to the world, posed by `source` from the next step on.
+    /// (A hand the app's own systems pose is an entity with
+    /// [`crate::input::AppHand`] instead.)
     pub fn add_hand(&mut self, source: impl HandSource + 'static) -> HandId {
         self.driver.add_hand(source)
     }
 
     /// Shows every step to `observer` (a trace writer, a session recorder).
-    pub fn observe(&mut self, observer: impl Observer + 'static) {
-        self.observers.push(Box::new(observer));
+    pub fn observe(&mut self, observer: impl Observer + Send + 'static) {
+        self.observers.push(Mutex::new(Box::new(observer)));
     }
 
     /// The world.
@@ -79,7 +96,7 @@ impl Interaction {
         self.driver.hands()
     }
 
-    /// A number no other interaction of this process has.
+    /// A number no other `HandPhysics` of this process has.
     pub fn serial(&self) -> u64 {
         self.serial
     }
@@ -87,6 +104,12 @@ impl Interaction {
     /// Physics steps run so far.
     pub fn steps(&self) -> usize {
         self.driver.steps()
+    }
+
+    /// The physics time step, the world's `dt`, as the plugin's clock ticks
+    /// it: zero for a `dt` under a nanosecond, which the clock never ticks.
+    pub fn timestep(&self) -> Duration {
+        Duration::from_secs_f64(f64::from(self.world().config().dt))
     }
 
     /// Why stepping stopped, if it has.
@@ -100,8 +123,11 @@ impl Interaction {
         if self.stopped.is_some() {
             return false;
         }
-        let mut observers: Vec<&mut dyn Observer> =
-            self.observers.iter_mut().map(|o| &mut **o as &mut dyn Observer).collect();
+        let mut observers: Vec<&mut dyn Observer> = (self.observers.iter_mut())
+            .map(|o| {
+                &mut **o.get_mut().unwrap_or_else(PoisonError::into_inner) as &mut dyn Observer
+            })
+            .collect();
         match self.driver.step(&mut observers) {
             Ok(true) => true,
             Ok(false) => {

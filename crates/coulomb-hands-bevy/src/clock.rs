@@ -1,0 +1,58 @@
+//! The physics' own schedule and clock. Each frame, the app's virtual time
+//! is added to [`Time<HandClock>`], and [`HandPhysicsStep`] runs once per
+//! whole world `dt` of it, so the physics rate is the world's whatever the
+//! frame rate (as Bevy's fixed loop does, but on a clock of its own: the
+//! app's `Time<Fixed>` and its fixed schedules are left as they are).
+
+use crate::physics::HandPhysics;
+use bevy::ecs::schedule::ScheduleLabel;
+use bevy::prelude::*;
+use std::time::Duration;
+
+/// The schedule of one physics step. The plugin's step runs in it, in
+/// [`crate::HandPhysicsSystems::Step`]; an app's system that must see
+/// every step (not every frame) goes here too. While it runs, `Time` is
+/// the physics clock.
+#[derive(ScheduleLabel, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct HandPhysicsStep;
+
+/// The physics clock's context: `Time<HandClock>` has advanced by one world
+/// `dt` per step run, and keeps the virtual time not yet stepped.
+#[derive(Reflect, Debug, Clone, Copy, Default)]
+pub struct HandClock {
+    /// Virtual time received and not yet stepped (less than one `dt` after
+    /// a frame).
+    overstep: Duration,
+}
+
+impl HandClock {
+    /// Virtual time received and not yet stepped.
+    pub fn overstep(&self) -> Duration {
+        self.overstep
+    }
+}
+
+/// Runs [`HandPhysicsStep`] once for each whole world `dt` of virtual time
+/// received, with `Time` set to the physics clock meanwhile.
+pub(crate) fn run_steps(world: &mut World) {
+    let Some(dt) = world.get_resource::<HandPhysics>().map(HandPhysics::timestep) else {
+        return;
+    };
+    if dt.is_zero() {
+        return;
+    }
+    let delta = world.resource::<Time<Virtual>>().delta();
+    world.resource_mut::<Time<HandClock>>().context_mut().overstep += delta;
+    let _ = world.try_schedule_scope(HandPhysicsStep, |world, schedule| {
+        loop {
+            let mut clock = world.resource_mut::<Time<HandClock>>();
+            let Some(rest) = clock.context().overstep.checked_sub(dt) else { break };
+            clock.context_mut().overstep = rest;
+            clock.advance_by(dt);
+            let generic = clock.as_generic();
+            *world.resource_mut::<Time>() = generic;
+            schedule.run(world);
+        }
+    });
+    *world.resource_mut::<Time>() = world.resource::<Time<Virtual>>().as_generic();
+}

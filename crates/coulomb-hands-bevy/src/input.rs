@@ -1,0 +1,169 @@
+//! Hands the app poses itself: an entity with [`AppHand`], whose
+//! [`HandInput`] the app's systems write each frame (from an XR runtime's
+//! hand joints, a tracker read by another plugin, mouse and keyboard).
+//!
+//! The plugin adds a hand to the world for each such entity, and again to
+//! any [`HandPhysics`] that replaces the world, so the entity outlives
+//! worlds. Each physics step reads the newest input, held until the next
+//! write: the app writes at its frame or tracker rate, the physics samples
+//! at its own. Despawning the entity leaves its hand untracked (its
+//! contacts end).
+//!
+//! Any other core [`HandSource`] (a scenario's hand, a recording's track,
+//! the live Leap stream's [`coulomb_hands::run::live::LiveFeed`] hands,
+//! which never block a frame) is added with [`HandPhysics::add_hand`].
+
+use crate::physics::HandPhysics;
+use crate::reflect::SideReflect;
+use bevy::prelude::*;
+use coulomb_hands::hand::{HandPose, HandSample, PoseError, Side};
+use coulomb_hands::input::convert::Conversion;
+use coulomb_hands::input::layouts::{self, Joint, LayoutError, openxr};
+use coulomb_hands::input::skeleton::{SkeletonError, hand_pose};
+use coulomb_hands::run::RunError;
+use coulomb_hands::run::drive::HandSource;
+use std::sync::{Arc, Mutex, PoisonError};
+
+/// A hand whose poses the app's own systems write into its
+/// [`HandInput`]. Spawn it, and the plugin makes it an
+/// [`crate::entities::InteractionHand`] of the world, with its 16 bones as
+/// child entities.
+#[derive(Component, Reflect, Debug, Clone, Copy, PartialEq)]
+#[reflect(Component, Debug, PartialEq)]
+#[require(HandInput, Transform)]
+pub struct AppHand {
+    /// Which hand.
+    #[reflect(remote = SideReflect)]
+    pub side: Side,
+}
+
+impl AppHand {
+    /// A `side` hand, untracked until its input gets a pose.
+    pub fn new(side: Side) -> AppHand {
+        AppHand { side }
+    }
+}
+
+/// What the app's tracker says of an [`AppHand`] now.
+#[derive(Component, Reflect, Debug, Clone, Default)]
+#[reflect(Component, Default)]
+pub struct HandInput {
+    /// The pose for the next physics steps, or `None` while the hand is
+    /// not tracked.
+    #[reflect(ignore)]
+    sample: Option<HandSample>,
+}
+
+/// Why a frame's joints made no hand.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JointsError {
+    /// A joint is not finite, or has a negative radius.
+    #[error(transparent)]
+    Layout(#[from] LayoutError),
+    /// The joints made no skeleton (fingers of zero length, say).
+    #[error(transparent)]
+    Skeleton(#[from] SkeletonError),
+    /// The skeleton made a pose the world would refuse.
+    #[error(transparent)]
+    Pose(#[from] PoseError),
+}
+
+impl HandInput {
+    /// Poses the hand by the 16 bones of the core's model.
+    pub fn set_pose(&mut self, pose: HandPose) {
+        self.sample = Some(HandSample::from_pose(pose));
+    }
+
+    /// Poses the hand by a tracker's sample (a pose with grab and pinch
+    /// strengths), or loses it for `None` (its contacts end).
+    pub fn set(&mut self, sample: Option<HandSample>) {
+        self.sample = sample;
+    }
+
+    /// Poses the hand by the 26 joints of OpenXR's `XR_EXT_hand_tracking`
+    /// (in `XrHandJointEXT` order; world, m, y up). Joints that make no
+    /// valid hand leave it lost, and say why.
+    pub fn set_openxr(
+        &mut self,
+        side: Side,
+        joints: &[Joint; openxr::COUNT],
+    ) -> Result<(), JointsError> {
+        let sample = openxr_sample(side, joints);
+        self.sample = sample.as_ref().ok().cloned();
+        sample.map(|_| ())
+    }
+
+    /// The pose the physics reads, if the hand is tracked.
+    pub fn sample(&self) -> Option<&HandSample> {
+        self.sample.as_ref()
+    }
+}
+
+/// The hand of one frame's OpenXR joints (world, m, y up), as the core's
+/// OpenXR layout reads them.
+pub fn openxr_sample(
+    side: Side,
+    joints: &[Joint; openxr::COUNT],
+) -> Result<HandSample, JointsError> {
+    let id = i64::from(side == Side::Right);
+    let hand = layouts::from_openxr(id, side, joints)?;
+    let pose = hand_pose(&hand, &Conversion::identity())?;
+    pose.validate(id as u32)?;
+    Ok(HandSample::from_pose(pose))
+}
+
+/// The newest input of an [`AppHand`], shared by its entity and its
+/// world's source.
+type Slot = Arc<Mutex<Option<HandSample>>>;
+
+/// An [`AppHand`]'s place in the current world: its source's slot. Its
+/// drop (the entity despawned, or the world replaced) leaves the hand
+/// untracked.
+#[derive(Component, Debug)]
+pub(crate) struct AppHandLink {
+    /// The [`HandPhysics::serial`] of the world it is in.
+    pub serial: u64,
+    slot: Slot,
+}
+
+impl Drop for AppHandLink {
+    fn drop(&mut self) {
+        *self.slot.lock().unwrap_or_else(PoisonError::into_inner) = None;
+    }
+}
+
+/// The world's side of an [`AppHand`]: each step takes the newest input.
+struct PushedSource {
+    side: Side,
+    slot: Slot,
+}
+
+impl HandSource for PushedSource {
+    fn side(&self) -> Side {
+        self.side
+    }
+
+    fn sample(&mut self, _t: f64) -> Result<Option<HandSample>, RunError> {
+        Ok(self.slot.lock().unwrap_or_else(PoisonError::into_inner).clone())
+    }
+}
+
+/// Adds `hand` to `physics`' world, and links it.
+pub(crate) fn attach(
+    physics: &mut HandPhysics,
+    hand: AppHand,
+) -> (coulomb_hands::hand::HandId, AppHandLink) {
+    let slot = Slot::default();
+    let id = physics.add_hand(PushedSource { side: hand.side, slot: Arc::clone(&slot) });
+    (id, AppHandLink { serial: physics.serial(), slot })
+}
+
+/// An app hand whose input changed, or which was just linked to a world.
+type NewInput = Or<(Changed<HandInput>, Added<AppHandLink>)>;
+
+/// Hands each app hand's newest input to its world's source.
+pub(crate) fn push_inputs(hands: Query<(&HandInput, &AppHandLink), NewInput>) {
+    for (input, link) in &hands {
+        *link.slot.lock().unwrap_or_else(PoisonError::into_inner) = input.sample.clone();
+    }
+}
