@@ -41,3 +41,10 @@ pub fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
         _ => Err(format!("expected three finite numbers \"x,y,z\", got \"{s}\"")),
     }
 }
+
+/// A count of at least one (users, trials), up to 65535: clap names the
+/// range when it is not.
+pub fn count() -> impl clap::builder::TypedValueParser<Value = usize> {
+    use clap::builder::TypedValueParser;
+    clap::value_parser!(u16).range(1..).map(usize::from)
+}

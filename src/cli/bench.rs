@@ -1,31 +1,90 @@
 //! `bench`: the performance analysis of thesis §5.3 (Fig. 5.6), printed.
 
-use super::progress_bar;
-use coulomb_hands::run::bench::{self, BenchOptions, BenchReport, StepTimes, linear_fit};
+use super::options::JsonOutput;
+use super::{Outcome, progress_bar};
+use clap::builder::TypedValueParser;
+use coulomb_hands::run::bench::{self, BenchOptions, BenchReport, StepTimes, linear_fit, mujoco};
 use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::sync::LazyLock;
 
 /// The interaction layer's target at 32 bones (µs per step).
 const INTERACTION_TARGET_US: f64 = 10.0;
 /// The awake reference step's target, as a share of MuJoCo's step.
 const MUJOCO_TARGET_RATIO: f64 = 0.15;
 
-/// Runs the bench with a progress bar on stderr if `show`.
-pub fn measure(options: &BenchOptions, show: bool) -> Result<BenchReport, String> {
-    let bar = progress_bar(show, options.total_steps(), "{bar:30} {pos}/{len} steps {msg}");
-    let report = bench::run(options, &mut |n| bar.inc(n)).map_err(|e| e.to_string());
-    bar.finish_and_clear();
-    report
+/// Time steps against bones in contact (6..128) and the reference scene awake and
+/// asleep (thesis §5.3, Fig. 5.6); with --mujoco, MuJoCo's step beside them.
+#[derive(clap::Args)]
+pub struct BenchArgs {
+    #[command(flatten)]
+    timing: BenchRunArgs,
+    #[command(flatten)]
+    output: JsonOutput,
 }
 
-/// `bench`: runs it and prints its table, or one JSON object.
-pub fn bench(options: &BenchOptions, json: bool) -> Result<(), String> {
-    let report = measure(options, std::io::stderr().is_terminal())?;
-    if json {
-        println!("{}", serde_json::to_string(&report).map_err(|e| e.to_string())?);
-    } else {
-        print_report(&report, options);
+impl BenchArgs {
+    /// Runs the bench and prints its table, or one JSON object.
+    pub fn run(self) -> Outcome {
+        let options = self.timing.options();
+        let report = measure(&options, std::io::stderr().is_terminal())?;
+        if self.output.json {
+            println!("{}", serde_json::to_string(&report)?);
+        } else {
+            print_report(&report, &options);
+        }
+        Ok(())
     }
-    Ok(())
+}
+
+/// `--python`'s help: the Python `--mujoco` runs when none is given.
+static PYTHON_HELP: LazyLock<String> = LazyLock::new(|| {
+    let (venv, system) = (mujoco::VENV_PYTHON, mujoco::SYSTEM_PYTHON);
+    format!("The Python with pip's mujoco [default: {venv} if there, else {system}]")
+});
+
+/// What `bench` and `report` time.
+#[derive(clap::Args)]
+pub struct BenchRunArgs {
+    /// Timed steps per figure, after a warm-up.
+    #[arg(long, default_value_t = BenchOptions::STEPS,
+          value_parser = clap::value_parser!(u32).range(1..).map(|n| n as usize))]
+    steps: usize,
+    /// Held boxes in the reference scene (2 bones in contact each), at most the default.
+    #[arg(long, default_value_t = BenchOptions::MAX_BOXES,
+          value_parser = clap::value_parser!(u16).range(1..=BenchOptions::MAX_BOXES as i64)
+              .map(usize::from))]
+    boxes: usize,
+    /// Leave the reference scene's tower out.
+    #[arg(long)]
+    no_tower: bool,
+    /// Also time MuJoCo's mj_step on the reference scene (bench/mujoco_reference.py).
+    #[arg(long)]
+    mujoco: bool,
+    // The help names `default_python`'s choices, from their one home.
+    #[arg(long, requires = "mujoco", help = PYTHON_HELP.as_str())]
+    python: Option<PathBuf>,
+}
+
+impl BenchRunArgs {
+    /// The bench run these options ask for.
+    pub fn options(self) -> BenchOptions {
+        let python = self.python.unwrap_or_else(mujoco::default_python);
+        BenchOptions {
+            steps: self.steps,
+            boxes: self.boxes,
+            tower: !self.no_tower,
+            mujoco: self.mujoco.then_some(python),
+        }
+    }
+}
+
+/// Runs the bench with a progress bar on stderr if `show`.
+pub fn measure(options: &BenchOptions, show: bool) -> Result<BenchReport, bench::BenchError> {
+    let bar = progress_bar(show, options.total_steps(), "{bar:30} {pos}/{len} steps {msg}");
+    let report = bench::run(options, &mut |n| bar.inc(n));
+    bar.finish_and_clear();
+    report
 }
 
 fn print_report(r: &BenchReport, options: &BenchOptions) {

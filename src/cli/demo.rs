@@ -1,19 +1,61 @@
 //! `demo`: the scripted grasp-lift-carry, printed as a table.
 
-use coulomb_hands::run::demo::GraspLiftCarry;
+use super::Outcome;
+use super::args::positive;
+use super::options::JsonOutput;
+use clap::{Args, FromArgMatches};
+use coulomb_hands::run::demo::{GraspLiftCarry, GraspReport};
 use coulomb_hands::{InteractionConfig, KineticFriction};
 
-pub fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> {
-    let config = InteractionConfig {
-        kinetic: if thesis_kinetic { KineticFriction::Thesis } else { KineticFriction::Coulomb },
-        ..InteractionConfig::default()
-    };
-    let scene = GraspLiftCarry::new(config).map_err(|e| e.to_string())?;
-    let report = scene.run(every).map_err(|e| e.to_string())?;
-    if json {
-        println!("{}", serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?);
-        return Ok(());
+/// The default time between printed rows (s).
+pub const EVERY: f64 = 0.25;
+
+/// Scripted grasp, lift, carry and release of a cube (the default).
+#[derive(Args)]
+pub struct DemoArgs {
+    #[command(flatten)]
+    output: JsonOutput,
+    /// Use Eq. 3.8 as written instead of Coulomb's kinetic friction.
+    #[arg(long)]
+    thesis_kinetic: bool,
+    /// Seconds between printed rows.
+    #[arg(long, default_value_t = EVERY, value_parser = positive)]
+    every: f64,
+}
+
+impl DemoArgs {
+    /// The options of `coulomb-hands demo` with none given, which
+    /// `coulomb-hands` alone runs: clap's defaults, so that they have one
+    /// home.
+    pub fn defaults() -> Result<DemoArgs, clap::Error> {
+        let command = Self::augment_args(clap::Command::new("demo"));
+        Self::from_arg_matches(&command.try_get_matches_from(["demo"])?)
     }
+
+    /// Runs the demo and prints its table, or one JSON object; fails if
+    /// the cube was not held, or did not fall when the hand opened.
+    pub fn run(self) -> Outcome {
+        let kinetic =
+            if self.thesis_kinetic { KineticFriction::Thesis } else { KineticFriction::Coulomb };
+        let config = InteractionConfig { kinetic, ..InteractionConfig::default() };
+        let report = GraspLiftCarry::new(config)?.run(self.every as f32)?;
+        self.output.print(&report, print_table)?;
+        // The JSON carries the heights to judge by; the table says and judges.
+        if self.output.json || outcome(&report) == (true, true) {
+            return Ok(());
+        }
+        Err("the demo's physical outcome was wrong".into())
+    }
+}
+
+/// Whether the cube was held through the lift and turn, and whether it
+/// fell when the hand opened.
+fn outcome(report: &GraspReport) -> (bool, bool) {
+    let held = report.held_height > 0.15;
+    (held, report.final_height < report.held_height - 0.1)
+}
+
+fn print_table(report: &GraspReport) {
     println!(
         "grasp-lift-carry: a 5 cm, 50 g wooden cube; thumb + 4 fingers; lift 20 cm; turn 90°; open"
     );
@@ -62,12 +104,10 @@ pub fn demo(json: bool, thesis_kinetic: bool, every: f32) -> Result<(), String> 
         report.contacts_after_release
     );
     println!("max cube speed {:.2} m/s", report.max_speed);
-    let held = report.held_height > 0.15;
-    let dropped = report.final_height < report.held_height - 0.1;
+    let (held, dropped) = outcome(report);
     println!(
         "outcome: {} and {}",
         if held { "held through lift and turn" } else { "NOT held" },
         if dropped { "fell when the hand opened" } else { "did NOT fall" }
     );
-    if held && dropped { Ok(()) } else { Err("the demo's physical outcome was wrong".into()) }
 }

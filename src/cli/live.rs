@@ -1,57 +1,64 @@
 //! `live`: the physics on a live Leap Motion stream, with a scene and an
 //! object to touch, optionally recorded.
 
+use super::args::{parse_vec3, positive};
+use super::options::{JsonOutput, SessionArgs};
+use super::{Outcome, print_objects};
+use coulomb_hands::InteractionConfig;
+use coulomb_hands::input::live::DEFAULT_URL;
 use coulomb_hands::run::replay::GraspObject;
-use coulomb_hands::{InteractionConfig, RunError};
-use std::path::Path;
 
-pub struct LiveArgs<'a> {
-    pub url: &'a str,
-    pub seconds: f64,
-    pub device: glam::Vec3,
-    pub grace: f64,
-    pub scene: Option<&'a Path>,
-    /// An object, and where its centre starts (m).
-    pub object: Option<(GraspObject, glam::Vec3)>,
-    pub record: Option<&'a Path>,
-    pub json: bool,
+/// The default tracking time to run for (s).
+pub const SECONDS: f64 = 10.0;
+
+/// Run the physics on a live Leap Motion service's WebSocket stream.
+#[derive(clap::Args)]
+pub struct LiveArgs {
+    /// The service's WebSocket URL.
+    #[arg(long, default_value = DEFAULT_URL)]
+    url: String,
+    /// Stop after this many seconds of tracking time.
+    #[arg(long, default_value_t = SECONDS, value_parser = positive)]
+    seconds: f64,
+    #[command(flatten)]
+    session: SessionArgs,
+    /// Put an object (see --object) with its centre here, "x,y,z" in metres.
+    #[arg(long, value_parser = parse_vec3)]
+    object_at: Option<glam::Vec3>,
+    /// The --object-at object: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere, wood.
+    #[arg(
+        long,
+        value_name = "SHAPE:SIZE_M:MASS_KG",
+        default_value = "box:0.04:0.05",
+        requires = "object_at"
+    )]
+    object: GraspObject,
+    #[command(flatten)]
+    output: JsonOutput,
 }
 
-pub fn live(args: LiveArgs) -> Result<(), RunError> {
-    use coulomb_hands::input::convert::Conversion;
-    use coulomb_hands::output::Session;
-    use coulomb_hands::run::{live::run_live, replay::replay_world};
-    let LiveArgs { url, seconds, device, grace, scene, object, record, json } = args;
-    let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
-    let mut config = InteractionConfig::default();
-    if let Some(scene) = &scene {
-        config = config.with_scene(scene);
+impl LiveArgs {
+    /// Runs the stream for `--seconds`, then prints what the hands did.
+    pub fn run(self) -> Outcome {
+        use coulomb_hands::input::convert::Conversion;
+        use coulomb_hands::run::live::run_live;
+        let scene = self.session.load_scene()?;
+        let mut world = self.session.world(InteractionConfig::default(), scene.as_ref())?;
+        if let Some(at) = self.object_at {
+            world.add_object(&self.object.desc("object", at))?;
+        }
+        let conversion = Conversion::leap_desktop(self.session.device);
+        let (url, grace, seconds) = (&self.url, self.session.grace, self.seconds);
+        let s = run_live(url, &mut world, conversion, grace, seconds, &mut [])?;
+        self.session.save(&mut world)?;
+        self.output.print(&s, |s| {
+            println!(
+                "live {url}: {} frames, {} skipped, {} hands seen, {:.2} s simulated, \
+                 {} contacts begun",
+                s.frames, s.skipped, s.hands_seen, s.simulated, s.contacts_begun
+            );
+            print_objects(&s.objects);
+        })?;
+        Ok(())
     }
-    let mut world = replay_world(config, record.is_some())?;
-    if let Some(scene) = &scene {
-        world.add_scene(scene)?;
-    }
-    if let Some((object, at)) = object {
-        world.add_object(&object.desc("object", at))?;
-    }
-    let conversion = Conversion::leap_desktop(device);
-    let s = run_live(url, &mut world, conversion, grace, seconds, &mut [])?;
-    if let (Some(path), Some(session)) = (record, Session::take(&mut world)) {
-        session.save(path)?;
-    }
-    if json {
-        println!("{}", serde_json::to_string_pretty(&s).map_err(std::io::Error::other)?);
-        return Ok(());
-    }
-    println!(
-        "live {url}: {} frames, {} skipped, {} hands seen, {:.2} s simulated, {} contacts begun",
-        s.frames, s.skipped, s.hands_seen, s.simulated, s.contacts_begun
-    );
-    for o in &s.objects {
-        println!(
-            "object {}: moved {:.3} m, max speed {:.3} m/s",
-            o.name, o.displacement, o.max_speed
-        );
-    }
-    Ok(())
 }

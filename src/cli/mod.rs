@@ -1,17 +1,24 @@
-//! The subcommands of the `coulomb-hands` binary, one file each, and what they share.
+//! The subcommands of the `coulomb-hands` binary, one file each: its
+//! options, as the one struct clap fills, and how it runs and prints.
+//! `options` holds the option groups several subcommands share, `args`
+//! the value parsers.
 
 pub mod args;
 pub mod bench;
 pub mod demo;
 pub mod eval;
 pub mod live;
+pub mod mesh;
 pub mod options;
 pub mod replay;
 pub mod report;
 pub mod scenario;
 
-use coulomb_hands::RunError;
-use coulomb_hands::output::trace::TraceFile;
+use coulomb_hands::run::observe::ObjectSummary;
+
+/// What a subcommand returns: its error, printed as `error: …` with exit
+/// code 1 (or clap's own error, which `main` prints as clap does).
+pub type Outcome = Result<(), Box<dyn std::error::Error>>;
 
 /// A progress bar of `len` steps drawn with `template`, or a hidden one.
 pub fn progress_bar(show: bool, len: u64, template: &str) -> indicatif::ProgressBar {
@@ -22,22 +29,12 @@ pub fn progress_bar(show: bool, len: u64, template: &str) -> indicatif::Progress
     indicatif::ProgressBar::new(len).with_style(style)
 }
 
-/// A buffered output file; its errors name it.
-pub fn create(path: &std::path::Path) -> Result<TraceFile, RunError> {
-    Ok(TraceFile::create(path)?)
-}
-
-/// Writes `mesh::generate::shipped()` as OBJ files into `out`.
-pub fn write_meshes(out: &std::path::Path) -> std::io::Result<()> {
-    use coulomb_hands::scene::mesh::generate::{header, shipped};
-    let named = |path: &std::path::Path, e: std::io::Error| {
-        std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
-    };
-    std::fs::create_dir_all(out).map_err(|e| named(out, e))?;
-    for (name, mesh) in shipped() {
-        let path = out.join(format!("{name}.obj"));
-        std::fs::write(&path, mesh.to_obj(&header(name))).map_err(|e| named(&path, e))?;
-        println!("wrote {} ({} triangles)", path.display(), mesh.triangles.len());
+/// One line per object: how far it moved and how fast it went.
+pub fn print_objects(objects: &[ObjectSummary]) {
+    for o in objects {
+        println!(
+            "object {}: moved {:.3} m, max speed {:.3} m/s",
+            o.name, o.displacement, o.max_speed
+        );
     }
-    Ok(())
 }

@@ -1,83 +1,99 @@
 //! `replay`: a recording, a session file, or a soak.
 
-use super::{create, progress_bar};
-use coulomb_hands::{InteractionConfig, RunError};
+use super::args::parse_gamma;
+use super::options::{JsonOutput, MethodChoice, SessionArgs, TraceOutput};
+use super::{Outcome, print_objects, progress_bar};
+use coulomb_hands::input::recording::Format;
+use coulomb_hands::run::replay::{GraspObject, ReplaySummary};
+use coulomb_hands::{GammaMode, InteractionConfig, RunError};
+use std::path::{Path, PathBuf};
+use std::time::Duration;
 
-pub struct ReplayArgs<'a> {
-    pub file: &'a std::path::Path,
-    pub trace: Option<&'a std::path::Path>,
-    pub json: bool,
-    pub device: glam::Vec3,
-    pub grace: f64,
-    pub gamma: coulomb_hands::GammaMode,
-    pub method: coulomb_hands::Method,
-    pub object: Option<coulomb_hands::run::replay::GraspObject>,
-    pub record: Option<&'a std::path::Path>,
-    pub scene: Option<&'a std::path::Path>,
-    pub soak: Option<std::time::Duration>,
+/// Replay a Leap Motion recording (.json.lz or .json), or a recorded session, headlessly.
+#[derive(clap::Args)]
+pub struct ReplayArgs {
+    /// The recording.
+    file: PathBuf,
+    #[command(flatten)]
+    trace: TraceOutput,
+    #[command(flatten)]
+    output: JsonOutput,
+    #[command(flatten)]
+    session: SessionArgs,
+    /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
+    #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
+    object_at_grasp: Option<GraspObject>,
+    /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
+    #[arg(long, default_value_t = GammaMode::default(), value_parser = parse_gamma)]
+    gamma: GammaMode,
+    #[command(flatten)]
+    method: MethodChoice,
+    /// Soak: replay over and over in one world for this wall-clock time (90s, 10m,
+    /// 1h30m), putting the objects back and re-locking their fixtures before each
+    /// loop; report memory, steps per second and the peak object speed.
+    #[arg(long = "loop", value_name = "DURATION", conflicts_with = "record",
+          value_parser = coulomb_hands::run::soak::parse_duration)]
+    soak: Option<Duration>,
 }
 
-/// `replay`: one replay, a session's replay, or a soak.
-pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
-    use coulomb_hands::output::Session;
-    use coulomb_hands::run::observe::TraceWriter;
-    use coulomb_hands::run::replay::{place_at_grasp, replay, replay_closings, replay_world};
-    let ReplayArgs { file, trace, json, device, grace, gamma, method, .. } = args;
-    let ReplayArgs { object, record, scene, soak, .. } = args;
-    let scene = scene.map(coulomb_hands::scene::Scene::load).transpose()?;
-    if std::fs::read_to_string(file).is_ok_and(|t| Session::sniff(&t)) {
-        if soak.is_some() {
-            return Err("--loop replays Leap recordings; a session file replays once".into());
+impl ReplayArgs {
+    /// One replay, a session's replay, or a soak.
+    pub fn run(self) -> Outcome {
+        use coulomb_hands::output::Session;
+        use coulomb_hands::run::replay::{place_at_grasp, replay, replay_closings};
+        let scene = self.session.load_scene()?;
+        if std::fs::read_to_string(&self.file).is_ok_and(|t| Session::sniff(&t)) {
+            if self.soak.is_some() {
+                return Err("--loop replays Leap recordings; a session file replays once".into());
+            }
+            return Ok(replay_session(&self.file, &self.output)?);
         }
-        return Ok(replay_session(file, json)?);
-    }
-    let recording = coulomb_hands::input::recording::load(file)?;
-    let playback = recording.playback(device, grace)?;
-    let mut config = method.config(InteractionConfig { gamma, ..InteractionConfig::default() });
-    if let Some(scene) = &scene {
-        config = config.with_scene(scene);
-    }
-    let mut world = replay_world(config, record.is_some())?;
-    if let Some(scene) = &scene {
-        world.add_scene(scene)?;
-    }
-    let mut writer = trace.map(create).transpose()?.map(TraceWriter::new);
-    let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
-    observers.extend(writer.as_mut().map(|w| w as _));
-    let source = &recording.source_name;
-    if let Some(duration) = soak {
-        // A soak puts its objects back before each loop, so they must
-        // exist from the start: one object, at the first closing.
-        let mut fixtures = Vec::new();
-        if let Some(object) = object {
-            fixtures.push(place_at_grasp(&mut world, &playback, object, 0)?.0);
+        let recording = coulomb_hands::input::recording::load(&self.file)?;
+        let playback = recording.playback(self.session.device, self.session.grace)?;
+        let base = InteractionConfig { gamma: self.gamma, ..InteractionConfig::default() };
+        let mut world = self.session.world(self.method.method.config(base), scene.as_ref())?;
+        let mut writer = self.trace.writer()?;
+        let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
+        observers.extend(writer.as_mut().map(|w| w as _));
+        let source = &recording.source_name;
+        if let Some(duration) = self.soak {
+            // A soak puts its objects back before each loop, so they must
+            // exist from the start: one object, at the first closing.
+            let mut fixtures = Vec::new();
+            if let Some(object) = self.object_at_grasp {
+                fixtures.push(place_at_grasp(&mut world, &playback, object, 0)?.0);
+            }
+            let report =
+                soak_loop(source, &playback, &mut world, &fixtures, duration, &mut observers)?;
+            if let Some(w) = writer {
+                w.finish()?;
+            }
+            self.output.print(&report, |r| print!("{r}"))?;
+            if report.memory.grew {
+                return Err("memory grew by more than 5 % after the first loop".into());
+            }
+            return Ok(());
         }
-        let report = soak_loop(source, &playback, &mut world, &fixtures, duration, &mut observers)?;
+        let summary = match self.object_at_grasp {
+            Some(object) => replay_closings(source, &playback, &mut world, object, &mut observers)?,
+            None => replay(source, &playback, &mut world, &[], &mut observers)?,
+        };
+        drop(observers);
         if let Some(w) = writer {
             w.finish()?;
         }
-        print_soak(&report, json)?;
-        if report.memory.grew {
-            return Err("memory grew by more than 5 % after the first loop".into());
-        }
-        return Ok(());
+        self.session.save(&mut world)?;
+        let closings = self.object_at_grasp.is_some();
+        let format = &recording.format;
+        self.output.print(&summary, |s| print_summary(s, format, closings))?;
+        Ok(())
     }
-    let summary = match object {
-        Some(object) => replay_closings(source, &playback, &mut world, object, &mut observers)?,
-        None => replay(source, &playback, &mut world, &[], &mut observers)?,
-    };
-    drop(observers);
-    if let Some(w) = writer {
-        w.finish()?;
-    }
-    if let (Some(path), Some(session)) = (record, Session::take(&mut world)) {
-        session.save(path)?;
-    }
-    if json {
-        println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
-        return Ok(());
-    }
-    println!("replayed {} (format {})", summary.source, recording.format);
+}
+
+/// What a replay did: its recording, glitches left out, closings (if an
+/// object was put at them), contacts and objects.
+fn print_summary(summary: &ReplaySummary, format: &Format, closings: bool) {
+    println!("replayed {} (format {format})", summary.source);
     println!(
         "frames: {}, hands: {}, duration: {:.2} s, physics steps: {}",
         summary.frames, summary.hands, summary.duration, summary.steps
@@ -90,18 +106,12 @@ pub fn replay(args: ReplayArgs) -> Result<(), Box<dyn std::error::Error>> {
             println!("  {line}");
         }
     }
-    if object.is_some() {
+    if closings {
         print_closings(&summary.closings);
     }
     println!("contacts begun: {}", summary.contacts_begun);
-    for o in &summary.objects {
-        println!(
-            "object {}: moved {:.3} m, max speed {:.3} m/s",
-            o.name, o.displacement, o.max_speed
-        );
-    }
+    print_objects(&summary.objects);
     println!("all values finite: {}", summary.all_finite);
-    Ok(())
 }
 
 /// One line per closing, and how many held and were let go.
@@ -126,7 +136,7 @@ fn print_closings(closings: &[coulomb_hands::run::closing::ClosingVerdict]) {
 }
 
 /// `replay --loop`: the soak, with a progress bar on a terminal.
-pub fn soak_loop(
+fn soak_loop(
     source: &str,
     playback: &coulomb_hands::input::playback::Playback,
     world: &mut coulomb_hands::InteractionWorld,
@@ -149,18 +159,8 @@ pub fn soak_loop(
     report
 }
 
-/// Prints a soak's report.
-pub fn print_soak(r: &coulomb_hands::run::soak::SoakReport, json: bool) -> Result<(), RunError> {
-    if json {
-        println!("{}", serde_json::to_string_pretty(r).map_err(std::io::Error::other)?);
-    } else {
-        print!("{r}");
-    }
-    Ok(())
-}
-
 /// Replays a recorded session file and prints what its objects did.
-fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
+fn replay_session(file: &Path, output: &JsonOutput) -> Result<(), RunError> {
     use coulomb_hands::output::Session;
     use coulomb_hands::run::observe::Summary;
     let session = Session::load(file)?;
@@ -179,26 +179,19 @@ fn replay_session(file: &std::path::Path, json: bool) -> Result<(), RunError> {
         Some(s) => s.objects(&world)?,
         None => Vec::new(),
     };
-    if json {
-        let summary = serde_json::json!({
-            "session": file.display().to_string(),
-            "steps": session.steps(),
-            "objects": objects
-        });
-        println!("{}", serde_json::to_string_pretty(&summary).map_err(std::io::Error::other)?);
-        return Ok(());
-    }
-    println!(
-        "replayed session {} ({} steps, {:.2} s)",
-        file.display(),
-        session.steps(),
-        world.time()
-    );
-    for o in &objects {
+    let summary = serde_json::json!({
+        "session": file.display().to_string(),
+        "steps": session.steps(),
+        "objects": objects
+    });
+    output.print(&summary, |_| {
         println!(
-            "object {}: moved {:.3} m, max speed {:.3} m/s",
-            o.name, o.displacement, o.max_speed
+            "replayed session {} ({} steps, {:.2} s)",
+            file.display(),
+            session.steps(),
+            world.time()
         );
-    }
+        print_objects(&objects);
+    })?;
     Ok(())
 }

@@ -2,25 +2,60 @@
 //! scenarios and replays run here, and the accuracy study and benchmark
 //! run here too unless their JSON is given or they are left out.
 
-use super::progress_bar;
+use super::bench::BenchRunArgs;
+use super::eval::accuracy::StudyArgs;
+use super::{Outcome, progress_bar};
+use coulomb_hands::GammaMode;
 use coulomb_hands::eval::AccuracyOptions;
 use coulomb_hands::output::report::{
-    Ablation, AccuracyStudy, BenchReport, Header, ReportData, Sourced, SweepStudy, html, utc_date,
+    Ablation, AccuracyStudy, BenchReport, Header, ReplayRun, ReportData, ScenarioRun, Sourced,
+    SweepStudy, html, utc_date,
 };
-use coulomb_hands::run::bench::{BenchOptions, mujoco};
+use coulomb_hands::run::bench::{BenchError, BenchOptions, mujoco};
 use coulomb_hands::run::report::{ReplayInput, bundled_recordings, scenario_run};
 use coulomb_hands::run::scenario::{Scenario, shipped};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
-pub struct ReportArgs<'a> {
-    pub out: &'a Path,
-    pub accuracy: Source<'a, AccuracyOptions>,
-    pub bench: Source<'a, BenchOptions>,
-    pub sweep: Option<&'a Path>,
-    pub ablation: Option<&'a Path>,
-    pub scenarios: Option<&'a [String]>,
-    pub replays: Option<&'a [PathBuf]>,
+/// Write a self-contained HTML report (index.html): placement accuracy, step
+/// times, every shipped scenario and the bundled replays, with plots. Without
+/// --accuracy or --bench, it runs the accuracy study and the bench itself.
+#[derive(clap::Args)]
+pub struct ReportArgs {
+    /// The directory to write index.html to; checked before any work.
+    #[arg(long, default_value = "report")]
+    out: PathBuf,
+    /// The placement-accuracy study's JSON (`eval accuracy --json`), instead of
+    /// running the study.
+    #[arg(long, value_name = "FILE")]
+    accuracy: Option<PathBuf>,
+    /// The benchmark's JSON (`bench --json`), instead of running the bench.
+    #[arg(long, value_name = "FILE")]
+    bench: Option<PathBuf>,
+    /// The placement study over tracking noise (`eval sweep --json`); the report
+    /// does not run it (it takes minutes).
+    #[arg(long, value_name = "FILE")]
+    sweep: Option<PathBuf>,
+    /// The ablation of the thesis's law (`eval ablation --json`).
+    #[arg(long, value_name = "FILE")]
+    ablation: Option<PathBuf>,
+    /// Leave the accuracy study out.
+    #[arg(long, conflicts_with = "accuracy")]
+    no_accuracy: bool,
+    /// Leave the benchmark out.
+    #[arg(long, conflicts_with = "bench")]
+    no_bench: bool,
+    /// Only these scenarios (shipped names or files), comma-separated.
+    #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
+    scenarios: Option<Vec<String>>,
+    /// Only these recordings (Leap or joint recordings), comma-separated (default: every one in
+    /// data/leap/).
+    #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
+    replays: Option<Vec<PathBuf>>,
+    #[command(flatten, next_help_heading = "Accuracy study (without --accuracy)")]
+    study: StudyArgs,
+    #[command(flatten, next_help_heading = "Bench (without --bench)")]
+    timing: BenchRunArgs,
 }
 
 /// Where the accuracy study or the benchmark comes from.
@@ -94,15 +129,15 @@ fn study(
         o.seed,
         methods.join(", ")
     );
-    let data = super::eval::study(o, std::io::stderr().is_terminal())?;
+    let data = super::eval::accuracy::study(o, std::io::stderr().is_terminal())?;
     Ok(Some(Sourced { source, data }))
 }
 
 /// The benchmark run here, if it is to be, with a progress bar.
-fn bench(
+fn run_bench(
     source: &Source<BenchOptions>,
     build: &str,
-) -> Result<Option<Sourced<BenchReport>>, String> {
+) -> Result<Option<Sourced<BenchReport>>, BenchError> {
     let Source::Run(o) = source else { return Ok(None) };
     let source = format!(
         "measured by this command ({build} build): {} timed steps per figure; the reference \
@@ -145,89 +180,116 @@ fn header() -> Header {
     }
 }
 
-/// Writes `out/index.html`: checks `out`, reads every input and checks
-/// MuJoCo's Python first, then runs the accuracy study, the bench, the
-/// scenarios and the replays, with progress bars on a terminal.
-pub fn report(args: ReportArgs) -> Result<(), Box<dyn std::error::Error>> {
-    writable(args.out)?;
-    let accuracy_file =
-        read(&args.accuracy, AccuracyStudy::load, "coulomb-hands eval accuracy --json")?;
-    let bench_file = read(&args.bench, BenchReport::load, "coulomb-hands bench --json")?;
-    let sweep = read(&given(args.sweep), SweepStudy::load, "coulomb-hands eval sweep --json")?;
-    let ablation =
-        read(&given(args.ablation), Ablation::load, "coulomb-hands eval ablation --json")?;
-    let names: Vec<String> = match args.scenarios {
-        Some(names) => names.to_vec(),
-        None => shipped().iter().map(|s| s.0.to_string()).collect(),
-    };
-    let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
-    let files = args.replays.map_or_else(bundled_recordings, <[PathBuf]>::to_vec);
-    let inputs = files.iter().map(|f| ReplayInput::load(f)).collect::<Result<Vec<_>, _>>()?;
-    if let Source::Run(BenchOptions { mujoco: Some(python), .. }) = &args.bench {
-        mujoco::check(python)?;
-    }
+impl ReportArgs {
+    /// Writes `out/index.html`: checks `out`, reads every input and checks
+    /// MuJoCo's Python first, then runs the accuracy study, the bench, the
+    /// scenarios and the replays, with progress bars on a terminal.
+    pub fn run(self) -> Outcome {
+        let accuracy =
+            Source::new(self.accuracy.as_deref(), self.no_accuracy, || self.study.options());
+        let bench = Source::new(self.bench.as_deref(), self.no_bench, || self.timing.options());
+        writable(&self.out)?;
+        let accuracy_file =
+            read(&accuracy, AccuracyStudy::load, "coulomb-hands eval accuracy --json")?;
+        let bench_file = read(&bench, BenchReport::load, "coulomb-hands bench --json")?;
+        let sweep = given(self.sweep.as_deref());
+        let sweep = read(&sweep, SweepStudy::load, "coulomb-hands eval sweep --json")?;
+        let ablation = given(self.ablation.as_deref());
+        let ablation = read(&ablation, Ablation::load, "coulomb-hands eval ablation --json")?;
+        let names: Vec<String> = match &self.scenarios {
+            Some(names) => names.clone(),
+            None => shipped().iter().map(|s| s.0.to_string()).collect(),
+        };
+        let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
+        let files = self.replays.as_deref().map_or_else(bundled_recordings, <[PathBuf]>::to_vec);
+        let inputs = files.iter().map(|f| ReplayInput::load(f)).collect::<Result<Vec<_>, _>>()?;
+        if let Source::Run(BenchOptions { mujoco: Some(python), .. }) = &bench {
+            mujoco::check(python)?;
+        }
 
-    let header = header();
-    let accuracy = accuracy_file.or(study(&args.accuracy, &header.build)?);
-    let bench = bench_file.or(bench(&args.bench, &header.build)?);
+        let (named_scenarios, named_replays) = (self.scenarios.is_some(), self.replays.is_some());
+        let header = header();
+        let accuracy_data = accuracy_file.or(study(&accuracy, &header.build)?);
+        let bench_data = bench_file.or(run_bench(&bench, &header.build)?);
+        let (scenario_runs, replay_runs) = run_catalogue(&scenarios, &inputs);
+        let passed = scenario_runs.iter().filter(|r| r.passed).count();
+        let summary = format!(
+            "{} scenarios ({passed} passed), {} replays; accuracy: {}, bench: {}",
+            scenario_runs.len(),
+            replay_runs.len(),
+            accuracy.word(),
+            bench.word(),
+        );
+        let data = ReportData {
+            accuracy: accuracy_data,
+            sweep,
+            ablation,
+            bench: bench_data,
+            scenarios: Some(scenarios_section(scenario_runs, named_scenarios, &header.build)),
+            replays: Some(replays_section(replay_runs, named_replays)),
+            header,
+        };
+        let path = self.out.join("index.html");
+        std::fs::write(&path, html(&data)).map_err(|e| format!("{}: {e}", path.display()))?;
+        println!("wrote {}: {summary}", path.display());
+        Ok(())
+    }
+}
+
+/// Every scenario and replay run, with a progress bar on a terminal.
+fn run_catalogue(
+    scenarios: &[Scenario],
+    inputs: &[ReplayInput],
+) -> (Vec<ScenarioRun>, Vec<ReplayRun>) {
     let runs = (scenarios.len() + inputs.len()) as u64;
     let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
     let bar = progress_bar(std::io::stderr().is_terminal(), runs, template);
     let mut scenario_runs = Vec::new();
-    for s in &scenarios {
+    for s in scenarios {
         bar.set_message(format!("scenario {}", s.name));
         scenario_runs.push(scenario_run(s));
         bar.inc(1);
     }
     let mut replay_runs = Vec::new();
-    for input in &inputs {
+    for input in inputs {
         bar.set_message(format!("replay {}", input.name));
         replay_runs.push(input.run());
         bar.inc(1);
     }
     bar.finish_and_clear();
+    (scenario_runs, replay_runs)
+}
 
-    let passed = scenario_runs.iter().filter(|r| r.passed).count();
-    let summary = format!(
-        "{} scenarios ({passed} passed), {} replays; accuracy: {}, bench: {}",
-        scenario_runs.len(),
-        replay_runs.len(),
-        args.accuracy.word(),
-        args.bench.word(),
+/// The scenarios' section, saying which ran: every shipped one, or those
+/// `--scenarios` `named`.
+fn scenarios_section(
+    runs: Vec<ScenarioRun>,
+    named: bool,
+    build: &str,
+) -> Sourced<Vec<ScenarioRun>> {
+    let n = runs.len();
+    let which = if named {
+        format!("the {n} scenario(s) named by --scenarios")
+    } else {
+        format!("every shipped scenario ({n})")
+    };
+    Sourced { source: format!("run by this command ({build} build): {which}"), data: runs }
+}
+
+/// The replays' section, saying which ran (the bundled recordings, or
+/// those `--replays` `named`) and how.
+fn replays_section(runs: Vec<ReplayRun>, named: bool) -> Sourced<Vec<ReplayRun>> {
+    let n = runs.len();
+    let which = if named {
+        format!("the {n} recording(s) named by --replays")
+    } else {
+        format!("every Leap Motion recording in data/leap/ ({n})")
+    };
+    let source = format!(
+        "replayed by this command: {which}, at the 1 kHz physics rate with the replay's \
+         defaults (γ = {} N/m) and a box at every closing of a hand (4 cm, 50 g if the \
+         first closing is a fist; 2 cm, 10 g otherwise)",
+        GammaMode::default()
     );
-    let (n, build) = (scenario_runs.len(), &header.build);
-    let which = match args.scenarios {
-        None => format!("every shipped scenario ({n})"),
-        Some(_) => format!("the {n} scenario(s) named by --scenarios"),
-    };
-    let scenarios = Sourced {
-        source: format!("run by this command ({build} build): {which}"),
-        data: scenario_runs,
-    };
-    let n = replay_runs.len();
-    let which = match args.replays {
-        None => format!("every Leap Motion recording in data/leap/ ({n})"),
-        Some(_) => format!("the {n} recording(s) named by --replays"),
-    };
-    let replays = Sourced {
-        source: format!(
-            "replayed by this command: {which}, at the 1 kHz physics rate with the replay's \
-             defaults (γ = 400 N/m) and a box at every closing of a hand (4 cm, 50 g if the \
-             first closing is a fist; 2 cm, 10 g otherwise)"
-        ),
-        data: replay_runs,
-    };
-    let data = ReportData {
-        header,
-        accuracy,
-        sweep,
-        ablation,
-        bench,
-        scenarios: Some(scenarios),
-        replays: Some(replays),
-    };
-    let path = args.out.join("index.html");
-    std::fs::write(&path, html(&data)).map_err(|e| format!("{}: {e}", path.display()))?;
-    println!("wrote {}: {summary}", path.display());
-    Ok(())
+    Sourced { source, data: runs }
 }

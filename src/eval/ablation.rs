@@ -3,7 +3,7 @@
 
 use super::stats;
 use super::trial::{self, Condition, TrialRun};
-use super::{Conditions, Strategy, check_scale, check_some};
+use super::{AccuracyOptions, Conditions, Strategy, check_scale, check_some};
 use crate::friction::KineticFriction;
 pub use crate::output::report::{Ablation, AblationRow};
 use crate::pipeline::{InteractionConfig, Method};
@@ -47,14 +47,21 @@ pub struct AblationOptions {
 impl Default for AblationOptions {
     fn default() -> Self {
         AblationOptions {
-            users: 3,
-            trials: 5,
-            seed: 1,
+            users: Self::USERS,
+            trials: Self::TRIALS,
+            seed: AccuracyOptions::SEED,
             strategies: Strategy::ALL.to_vec(),
-            noise: 1.0,
+            noise: AccuracyOptions::NOISE,
             conditions: Conditions::default(),
         }
     }
+}
+
+impl AblationOptions {
+    /// The default users.
+    pub const USERS: usize = 3;
+    /// The default trials per user.
+    pub const TRIALS: usize = 5;
 }
 
 /// The configurations compared: the thesis's law, each departure added to

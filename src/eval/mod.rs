@@ -70,11 +70,15 @@ pub struct Conditions {
 
 impl Default for Conditions {
     fn default() -> Self {
-        Conditions { perception: 1.0, noise_from: Vec::new(), threads: trial::default_threads() }
+        let threads = trial::default_threads();
+        Conditions { perception: Self::PERCEPTION, noise_from: Vec::new(), threads }
     }
 }
 
 impl Conditions {
+    /// The default glance errors: the thesis's headset's.
+    pub const PERCEPTION: f32 = 1.0;
+
     /// Checks the glance scale and loads the tracking noise.
     pub(crate) fn noise(&self) -> Result<TrackingNoise, RunError> {
         check_scale("perception", self.perception)?;
@@ -85,18 +89,28 @@ impl Conditions {
 impl Default for AccuracyOptions {
     fn default() -> Self {
         AccuracyOptions {
-            users: 6,
-            trials: 20,
-            seed: 1,
+            users: Self::USERS,
+            trials: Self::TRIALS,
+            seed: Self::SEED,
             methods: Method::ALL.to_vec(),
             strategies: Strategy::ALL.to_vec(),
-            noise: 1.0,
+            noise: Self::NOISE,
             conditions: Conditions::default(),
         }
     }
 }
 
 impl AccuracyOptions {
+    /// The default users: the thesis's 6.
+    pub const USERS: usize = 6;
+    /// The default trials per user: the thesis's 20.
+    pub const TRIALS: usize = 20;
+    /// The default seed, of this study and of the ablation.
+    pub const SEED: u64 = 1;
+    /// The default tracking noise, of this study and of the ablation: the
+    /// recordings' own.
+    pub const NOISE: f32 = 1.0;
+
     /// Checks what a run needs: users, trials, a method and a strategy,
     /// and scales that are finite and not negative.
     pub fn validate(&self) -> Result<(), RunError> {

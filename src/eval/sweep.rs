@@ -32,15 +32,26 @@ pub struct SweepOptions {
 impl Default for SweepOptions {
     fn default() -> Self {
         SweepOptions {
-            users: 4,
-            trials: 5,
-            seeds: vec![1, 2, 3],
-            noise: vec![0.0, 0.5, 1.0, 2.0],
+            users: Self::USERS,
+            trials: Self::TRIALS,
+            seeds: Self::SEEDS.to_vec(),
+            noise: Self::NOISE.to_vec(),
             methods: Method::ALL.to_vec(),
             strategies: Strategy::ALL.to_vec(),
             conditions: Conditions::default(),
         }
     }
+}
+
+impl SweepOptions {
+    /// The default users per seed.
+    pub const USERS: usize = 4;
+    /// The default trials per user.
+    pub const TRIALS: usize = 5;
+    /// The default seeds: three draws of users and trials.
+    pub const SEEDS: [u64; 3] = [1, 2, 3];
+    /// The default noise strengths: none, half, the recordings' own, twice.
+    pub const NOISE: [f32; 4] = [0.0, 0.5, 1.0, 2.0];
 }
 
 /// The summary of `noise`.

@@ -206,6 +206,16 @@ impl Default for GammaMode {
     }
 }
 
+/// As the command line takes it: `auto`, or γ in N/m.
+impl std::fmt::Display for GammaMode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            GammaMode::Fixed(gamma) => write!(f, "{gamma}"),
+            GammaMode::Auto => f.write_str("auto"),
+        }
+    }
+}
+
 /// Everything needed to add a dynamic object.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ObjectDesc {

@@ -27,6 +27,7 @@ pub use scene::{BOXES_PER_HAND, MAX_HANDS, held_boxes_scene, sweep_scene};
 
 use super::RunError;
 use super::drive::{Driver, Observer, StepView};
+use crate::hand::BONES_PER_HAND;
 use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
 use rapier3d::prelude::RigidBodyActivation;
 use std::path::PathBuf;
@@ -54,7 +55,7 @@ pub fn bench_config() -> InteractionConfig {
 pub struct BenchOptions {
     /// Timed steps per figure, after the warm-up.
     pub steps: usize,
-    /// Held boxes in the reference scene (1..=16, two bones each).
+    /// Held boxes in the reference scene (1 to [`Self::MAX_BOXES`], two bones each).
     pub boxes: usize,
     /// Whether the reference scene has its tower.
     pub tower: bool,
@@ -63,6 +64,12 @@ pub struct BenchOptions {
 }
 
 impl BenchOptions {
+    /// The default timed steps per figure.
+    pub const STEPS: usize = 5000;
+    /// The most held boxes the reference scene has (and the default): one
+    /// per bone of a hand, each pressed by that bone of both hands.
+    pub const MAX_BOXES: usize = BONES_PER_HAND;
+
     /// The steps a run takes, for a progress bar: the sweep's worlds and
     /// the reference scene's two (MuJoCo's steps not counted).
     pub fn total_steps(&self) -> u64 {

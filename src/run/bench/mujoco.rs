@@ -13,6 +13,8 @@ pub const SCRIPT: &str = include_str!("../../../bench/mujoco_reference.py");
 pub const SETTINGS: &str = "pyramidal cone, Euler integrator, dt 1 ms";
 /// Where `bench/mujoco.sh` puts its virtualenv's Python by default.
 pub const VENV_PYTHON: &str = "target/mujoco-venv/bin/python";
+/// The Python `--mujoco` runs without that virtualenv: the system's.
+pub const SYSTEM_PYTHON: &str = "python3";
 
 /// What to install, said by every error that a missing MuJoCo causes.
 const INSTALL: &str = "--mujoco needs Python 3 with pip's mujoco: run bench/mujoco.sh (a \
@@ -65,10 +67,10 @@ pub struct MujocoRun {
 
 /// The Python `--mujoco` uses when none is given: `bench/mujoco.sh`'s
 /// virtualenv if it is there (relative to the working directory), else
-/// `python3`.
+/// the system's.
 pub fn default_python() -> PathBuf {
     let venv = Path::new(VENV_PYTHON);
-    if venv.exists() { venv.to_path_buf() } else { PathBuf::from("python3") }
+    if venv.exists() { venv.to_path_buf() } else { PathBuf::from(SYSTEM_PYTHON) }
 }
 
 /// Checks that `python` runs and imports mujoco; returns MuJoCo's version.

@@ -1,0 +1,85 @@
+//! Option groups that the studies share, each one struct that they
+//! flatten: how every trial runs (all of them, and `report`), one draw of
+//! users (`eval accuracy`, `eval ablation`), the methods compared (`eval
+//! accuracy`, `eval sweep`) and the users' strategies (all of them).
+
+use coulomb_hands::Method;
+use coulomb_hands::eval::{AccuracyOptions, Conditions, Strategy, trial};
+use std::fmt::Display;
+use std::path::PathBuf;
+use std::sync::LazyLock;
+
+/// How every trial of a study runs, besides its noise strength: shared by
+/// `eval accuracy`, `eval sweep`, `eval ablation` and `report`.
+#[derive(clap::Args)]
+pub struct ConditionArgs {
+    /// The users' glance errors, times those of the thesis's headset (0: exact sight).
+    #[arg(long, value_name = "SCALE", default_value_t = Conditions::PERCEPTION,
+          value_parser = scale)]
+    perception: f32,
+    /// Take the tracking noise from these recordings, comma-separated (default: the
+    /// bundled Leap Motion recordings).
+    #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
+    noise_from: Vec<PathBuf>,
+    /// Threads to run trials on (the results do not depend on it) [default: the cores].
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
+    threads: Option<u16>,
+}
+
+impl ConditionArgs {
+    /// The conditions these options ask for.
+    pub fn conditions(self) -> Conditions {
+        let threads = self.threads.map_or_else(trial::default_threads, usize::from);
+        Conditions { perception: self.perception, noise_from: self.noise_from, threads }
+    }
+}
+
+/// One draw of users and their tracker's noise: `eval accuracy` (and
+/// `report`) and `eval ablation`, whose users are drawn alike.
+#[derive(clap::Args)]
+pub struct DrawArgs {
+    /// Seed of users, squares, tracking noise and glances.
+    #[arg(long, default_value_t = AccuracyOptions::SEED)]
+    pub seed: u64,
+    /// Tracking noise, times the recordings' (0: a perfect tracker).
+    #[arg(long, value_name = "SCALE", default_value_t = AccuracyOptions::NOISE,
+          value_parser = scale)]
+    pub noise: f32,
+}
+
+/// Every method, as `--method` takes them.
+static ALL_METHODS: LazyLock<String> = LazyLock::new(|| comma_list(&Method::ALL));
+
+/// The methods a study compares: `eval accuracy` (and `report`) and `eval sweep`.
+#[derive(clap::Args)]
+pub struct MethodsArg {
+    /// The methods to compare, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = ALL_METHODS.as_str())]
+    pub method: Vec<Method>,
+}
+
+/// Every strategy, as `--strategy` takes them.
+static ALL_STRATEGIES: LazyLock<String> = LazyLock::new(|| comma_list(&Strategy::ALL));
+
+/// How a study's users move the cube: every study.
+#[derive(clap::Args)]
+pub struct StrategiesArg {
+    /// How the users move the cube, comma-separated: lift (and place) or slide (it
+    /// over the board between the fingers). Every method or configuration runs with each.
+    #[arg(long, value_delimiter = ',', default_value = ALL_STRATEGIES.as_str())]
+    pub strategy: Vec<Strategy>,
+}
+
+/// `items` as a comma-separated list, as the command line takes it: a
+/// list's default, for clap to parse and show.
+pub fn comma_list<T: Display>(items: &[T]) -> String {
+    items.iter().map(T::to_string).collect::<Vec<_>>().join(",")
+}
+
+/// A scale of noise or of glance errors: a finite number ≥ 0.
+pub fn scale(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        _ => Err(format!("expected a finite scale ≥ 0, got {text}")),
+    }
+}
