@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# MuJoCo side by side with coulomb-hands (README "Benchmarks"): makes a
+# MuJoCo side by side with coulomb-hands (the book's "Benchmarks"): makes a
 # virtualenv with pip's mujoco, then runs `coulomb-hands bench --mujoco` with
 # it, so that both figures come from one run.
 #

@@ -1,4 +1,4 @@
-//! Criterion benchmarks of one interaction step (see README "Benchmarks"):
+//! Criterion benchmarks of one interaction step (the book's "Benchmarks"):
 //! the bone sweep of `coulomb-hands bench` (6 to 128 bones in contact, 8
 //! samples each) and the reference scene with its tower asleep and awake.
 

@@ -1,6 +1,6 @@
 //! How the replay's settings fare on every closing of every bundled
 //! recording: γ fixed or automatic (Eq. 3.11), and the skin patch, each
-//! with four objects put at every closing. README's replay defaults were
+//! with four objects put at every closing. The replay's defaults were
 //! chosen from this table. Only judged closings count (those held long
 //! enough, pressing the object, and settled: [`Hold::Judged`]).
 //!

@@ -53,8 +53,10 @@ fn section(path: &[String], page: &mut String) {
     let command = std::iter::once(BIN).chain(path.iter().map(String::as_str));
     let command = command.collect::<Vec<_>>().join(" ");
     let heading = "#".repeat(2 + path.len().saturating_sub(1));
+    // The blank line before the fence ends the output where trycmd, which runs every
+    // `console` block of the book (tests/readme.rs), reads it as ending with a newline.
     page.push_str(&format!(
-        "\n{heading} `{command}`\n\n```console\n$ {command} --help\n{text}```\n"
+        "\n{heading} `{command}`\n\n```console\n$ {command} --help\n{text}\n```\n"
     ));
     for sub in subcommands(&text) {
         section(&[path, &[sub]].concat(), page);

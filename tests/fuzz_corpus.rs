@@ -2,7 +2,7 @@
 //! (`fuzz/corpus/<target>/`, `fuzz/regressions/<target>/`) through the same
 //! entry points as the cargo-fuzz targets, on the stable toolchain: no
 //! input may panic, and whatever parses must be finite. The fuzzing itself
-//! is run by hand (README, "Fuzzing").
+//! is run by hand (the book, "Fuzzing").
 
 #[path = "../fuzz/entry.rs"]
 mod entry;

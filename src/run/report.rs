@@ -105,7 +105,7 @@ pub struct ReplayInput {
 
 /// The object held at a grasp: a 4 cm, 50 g box in a fist
 /// ([`is_power_grasp`] at the most closed instant), else a 2 cm, 10 g box,
-/// as README's replay examples hold. (A 4.5 cm box is wider than the gap
+/// as the book's replay examples hold. (A 4.5 cm box is wider than the gap
 /// an opened hand leaves between its index and ring fingers, 37 mm in
 /// `grab.json.lz`: it stays pinched between them.)
 pub fn grasp_object(playback: &Playback, track: usize, closed_at: f64) -> GraspObject {

@@ -29,7 +29,8 @@ fn every_method_completes_the_reduced_accuracy_study_with_errors_on_the_board() 
         let finite = m.mean_time_s.is_finite() && m.mean_mm.is_finite();
         assert_eq!(finite, !m.errors_mm.is_empty(), "{name}");
         // A grip that holds a 40 g cube completes nearly every trial; the
-        // thesis's law as written, an undamped spring, may not (README).
+        // thesis's law as written, an undamped spring, may not (the book's
+        // "Evaluation").
         if m.method != "thesis" {
             assert!(m.failed <= 2, "{name}: {} of 10 trials failed", m.failed);
         }
