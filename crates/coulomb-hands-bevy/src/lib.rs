@@ -81,6 +81,7 @@ impl Plugin for CoulombHandsPlugin {
             .register_type::<entities::HandBone>()
             .register_type::<input::AppHand>()
             .register_type::<input::HandInput>()
+            .register_type::<physics::HandPhysics>()
             .register_type::<contacts::Contacts>()
             .register_type::<entities::InteractionEntities>()
             .register_type::<Time<clock::HandClock>>()

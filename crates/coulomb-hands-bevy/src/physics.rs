@@ -40,12 +40,19 @@ pub struct HandPhysicsReplaced {
 /// Insert it with `App::insert_resource`; inserting another replaces the
 /// world, and the plugin replaces its entities (and sends
 /// [`HandPhysicsReplaced`]).
-#[derive(bevy::prelude::Resource)]
+///
+/// Reflected for its serial only: the world, its sources and observers are
+/// the core's, which has no Bevy (read them through [`HandPhysics::world`]).
+#[derive(bevy::prelude::Resource, bevy::prelude::Reflect)]
+#[reflect(from_reflect = false)]
 pub struct HandPhysics {
+    #[reflect(ignore)]
     driver: Driver<'static, InteractionWorld>,
     /// Behind locks that are never taken, as the driver's sources are:
     /// observers need only be `Send`.
+    #[reflect(ignore)]
     observers: Vec<Mutex<Box<dyn Observer + Send>>>,
+    #[reflect(ignore)]
     stopped: Option<Stopped>,
     /// Tells this world from one it replaced in an app.
     serial: u64,

@@ -376,7 +376,9 @@ fn the_plugins_types_are_reflected_and_its_resource_is_send() {
     let mut app = app(HandPhysics::of_scenario(&scenario("grasp-lift")).unwrap(), Duration::ZERO);
     app.update();
     let registry = app.world().resource::<AppTypeRegistry>().read();
-    for name in ["InteractionHand", "HandBone", "InteractionObject", "AppHand", "HandInput"] {
+    let components = ["InteractionHand", "HandBone", "InteractionObject", "AppHand", "HandInput"];
+    let resources = ["HandPhysics", "Contacts", "InteractionEntities"];
+    for name in components.into_iter().chain(resources) {
         let found = registry.iter().any(|t| t.type_info().type_path_table().ident() == Some(name));
         assert!(found, "{name} is registered");
     }

@@ -1,5 +1,5 @@
-//! README's "In a Bevy app": each frame an app system writes the joints of
-//! a tracked hand, and an observer hears the cube it touches.
+//! README's "In a Bevy app": each frame an app system (`push_joints`) writes
+//! the joints of a tracked hand, and an observer hears the cube it touches.
 mod tracker; // a stand-in for an XR runtime: a real recorded hand, as OpenXR joints
 
 use bevy::prelude::*;
@@ -21,7 +21,6 @@ fn main() -> Result<AppExit, Box<dyn std::error::Error>> {
     Ok(app.run())
 }
 
-/// Each frame: the tracker's joints, written to the hand's input.
 fn push_joints(time: Res<Time>, mut hands: Query<(&AppHand, &mut HandInput)>) {
     for (hand, mut input) in &mut hands {
         let joints = tracker::openxr_joints(time.elapsed_secs());

@@ -2,6 +2,7 @@
 //! one binary instead of four saves CI minutes and gigabytes of disk.
 
 mod ar;
+mod camera;
 mod hand_visual;
 mod head;
 mod keys;
