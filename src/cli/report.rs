@@ -141,11 +141,12 @@ fn run_bench(
     let Source::Run(o) = source else { return Ok(None) };
     let source = format!(
         "measured by this command ({build} build): {} timed steps per figure; the reference \
-         scene with {} held boxes{}{}",
+         scene with {} held boxes{}{}{}",
         o.steps,
         o.boxes,
         if o.tower { " and its tower" } else { ", without its tower" },
         if o.mujoco.is_some() { "; MuJoCo in the same run" } else { "" },
+        cluttered_scenes(&o.objects),
     );
     let data = super::bench::measure(o, std::io::stderr().is_terminal())?;
     Ok(Some(Sourced { source, data }))
@@ -292,4 +293,13 @@ fn replays_section(runs: Vec<ReplayRun>, named: bool) -> Sourced<Vec<ReplayRun>>
         GammaMode::default()
     );
     Sourced { source, data: runs }
+}
+
+/// The cluttered scenes a bench run times, for its source sentence.
+fn cluttered_scenes(objects: &[usize]) -> String {
+    if objects.is_empty() {
+        return String::new();
+    }
+    let counts: Vec<String> = objects.iter().map(usize::to_string).collect();
+    format!("; cluttered scenes of {} objects", counts.join(", "))
 }

@@ -18,7 +18,7 @@ pub(crate) struct Anchor {
     pub bone: BoneAnchor,
     /// Per sample: its point in the object frame and its skin offset from p
     /// in the bone frame.
-    pub samples: Vec<(Vec3, Vec3)>,
+    pub samples: patch::Samples,
     /// The patch's radius on the object (m).
     pub radius: f32,
     /// Whether the patch holds the object as a rigid support: a planar
@@ -216,13 +216,12 @@ impl Anchor {
             }
         };
         let rot_inv = bone_anchor.rotation(motion.now, &motion.palm_now).inverse();
-        let samples = patch::sample_offsets(n, patch.samples, radius)
-            .into_iter()
-            .map(|o| {
+        let samples = patch::Samples::from_pairs(
+            patch::sample_offsets(n, patch.samples, radius).into_iter().map(|o| {
                 let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
                 (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
-            })
-            .collect();
+            }),
+        );
         Anchor {
             c_local: object.pose.inverse_transform_point(c),
             n_local: object.pose.rotation.inverse() * n,
@@ -289,14 +288,15 @@ impl Anchor {
         // redefines: carry them over.
         let carry = bone_anchor.rotation(motion.now, &motion.palm_now).inverse()
             * self.bone.rotation(motion.now, &motion.palm_now);
-        for (_, skin) in self.samples.iter_mut() {
-            *skin = carry * *skin;
+        let samples = &mut self.samples;
+        for i in 0..samples.len() {
+            samples.skin.set(i, carry * samples.skin.get(i));
         }
         self.bone = bone_anchor;
-        for (ci_local, _) in self.samples.iter_mut() {
-            let ci = pose.transform_point(*ci_local) + shift;
+        for i in 0..samples.len() {
+            let ci = pose.transform_point(samples.object.get(i)) + shift;
             let on_surface = surface::project_to_surface(object.shape, pose, ci);
-            *ci_local = pose.inverse_transform_point(on_surface);
+            samples.object.set(i, pose.inverse_transform_point(on_surface));
         }
     }
 }

@@ -3,7 +3,8 @@
 //!
 //! New contacts are found through a chain of filters, cheapest first:
 //! 1. the whole hand's bounding box against each object's (most objects of
-//!    a scene are far from any hand);
+//!    a scene are far from any hand): the caller's, through rapier's broad
+//!    phase, from [`Detector::reach`];
 //! 2. each bone's box, grown by the contact offset, against those objects;
 //! 3. parry's exact closest features, within the contact offset.
 //!
@@ -41,8 +42,6 @@ pub(crate) struct Detector {
     /// Per bone of the hand being searched: its shape now and its reach,
     /// the bone's box grown by the contact offset.
     reach: Vec<(Bone, BoneShape, Aabb)>,
-    /// Indices of the objects whose boxes meet the whole hand's.
-    near_hand: Vec<usize>,
 }
 
 impl Detector {
@@ -57,31 +56,34 @@ impl Detector {
         within(bone, object, self.release_offset)
     }
 
-    /// One hand's new touches, through the filter chain. `bones` are the
-    /// hand's tracked bones, as they are now; `boxes[o]` is object `o`'s bounding box and
-    /// `view(o)` the object itself. `known(bone, o)` leaves out pairs that
-    /// are in contact already, before their exact query. `touch` is called
-    /// for every bone whose surface is within the contact offset of an
-    /// object, in bone order, then object order.
+    /// Starts the search of one hand: keeps each of `bones` (the hand's
+    /// tracked bones, as they are now) with its reach, and returns the
+    /// whole hand's reach (world), the box to find objects near; `None`
+    /// for no bones.
+    pub fn reach(&mut self, bones: impl Iterator<Item = (Bone, BoneShape)>) -> Option<Aabb> {
+        self.reach.clear();
+        let grow = self.contact_offset;
+        self.reach.extend(bones.map(|(bone, now)| (bone, now, bone_aabb(&now).loosened(grow))));
+        self.reach.iter().map(|r| r.2).reduce(|a, b| a.merged(&b))
+    }
+
+    /// The new touches of the hand [`Self::reach`] started, through the
+    /// rest of the filter chain. `near` holds the objects whose boxes meet
+    /// the hand's reach, in index order, with their boxes; `view(o)` is
+    /// object `o` itself. `known(bone, o)` leaves out pairs that are in
+    /// contact already, before their exact query. `touch` is called for
+    /// every bone whose surface is within the contact offset of an object,
+    /// in bone order, then object order.
     pub fn new_touches<'v>(
-        &mut self,
-        bones: impl Iterator<Item = (Bone, BoneShape)>,
-        boxes: &[Aabb],
+        &self,
+        near: &[(usize, Aabb)],
         view: impl Fn(usize) -> ObjectView<'v>,
         known: impl Fn(Bone, usize) -> bool,
         mut touch: impl FnMut(Bone, &ObjectView<'v>, Proximity),
     ) {
-        self.reach.clear();
-        let grow = self.contact_offset;
-        self.reach.extend(bones.map(|(bone, now)| (bone, now, bone_aabb(&now).loosened(grow))));
-        let Some(hand) = self.reach.iter().map(|r| r.2).reduce(|a, b| a.merged(&b)) else {
-            return;
-        };
-        self.near_hand.clear();
-        self.near_hand.extend((0..boxes.len()).filter(|&o| hand.intersects(&boxes[o])));
         for (bone, now, reach) in &self.reach {
-            for &o in &self.near_hand {
-                if !reach.intersects(&boxes[o]) || known(*bone, o) {
+            for &(o, bounds) in near {
+                if !reach.intersects(&bounds) || known(*bone, o) {
                     continue;
                 }
                 let object = view(o);

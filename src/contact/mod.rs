@@ -34,6 +34,7 @@
 pub(crate) mod anchor;
 pub(crate) mod detect;
 pub mod event;
+mod lanes;
 pub mod patch;
 pub mod surface;
 

@@ -9,10 +9,12 @@
 //! stabilising effect the thesis reports for 9 samples over 1.
 
 use super::anchor::Anchor;
+use super::lanes::{self, Chunk, LANES, Vec3Lanes};
 use super::surface;
 use super::{LawSettings, ObjectView};
-use crate::friction::{FrictionCoefficients, slipped_stretch, slips};
-use glam::{Mat3, Mat3A, Vec3, Vec3A};
+use crate::friction::{FrictionCoefficients, slipped_stretch, static_stretch_squared};
+use glam::{Mat3, Vec3};
+use wide::f32x4;
 
 /// Patch sizes per skin class (§3.5.4: thumb and palm patches are wider).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -104,12 +106,25 @@ const PLANAR_COS: f32 = 0.999;
 ///   object point has moved from its skin point, relative to the patch
 ///   centre (m); already limited by the caller's torsional friction.
 /// * `stiffness`: γ (N/m), split as γ/N per sample.
-#[inline]
 pub fn sample_forces(total: Vec3, deviations: &[Vec3], stiffness: f32, out: &mut Vec<Vec3>) {
+    let mut forces = Vec3Lanes::default();
+    lane_forces(total, &Vec3Lanes::from_items(deviations.iter().copied()), stiffness, &mut forces);
     out.clear();
+    out.extend(forces.iter());
+}
+
+/// [`sample_forces`] on lanes: `f_i = f/N − γ/N·(e_i − ē)`, so the
+/// deviation springs add no net force.
+#[inline]
+fn lane_forces(total: Vec3, deviations: &Vec3Lanes, stiffness: f32, out: &mut Vec3Lanes) {
     let n = deviations.len().max(1) as f32;
-    let mean = deviations.iter().copied().sum::<Vec3>() / n;
-    out.extend(deviations.iter().map(|e| total / n - stiffness / n * (*e - mean)));
+    let mean = lanes::splat(deviations.sum() / n);
+    let share = lanes::splat(total / n);
+    let k = f32x4::splat(stiffness / n);
+    out.reset(deviations.len());
+    for (f, e) in out.chunks_mut().iter_mut().zip(deviations.chunks()) {
+        *f = lanes::sub(share, lanes::scale(k, lanes::sub(*e, mean)));
+    }
 }
 
 /// `dt²·K/I` of the rocking springs of all patches on one object together,
@@ -181,15 +196,35 @@ impl Rocking {
 /// samples alone, its pressure up to 0.8 of the ring's radius from C, as a
 /// real face's moves towards its edge; a sample that would pull is let go.
 pub fn push_only(forces: &mut [Vec3], n: Vec3) {
-    let total: f32 = forces.iter().map(|f| -f.dot(n)).sum();
-    let pressing: f32 = forces.iter().map(|f| (-f.dot(n)).max(0.0)).sum();
+    let mut lanes = Vec3Lanes::from_items(forces.iter().copied());
+    lane_push_only(&mut lanes, n);
+    for (f, pushed) in forces.iter_mut().zip(lanes.iter()) {
+        *f = pushed;
+    }
+}
+
+/// [`push_only`] on lanes; the sums are taken in sample order.
+#[inline]
+fn lane_push_only(forces: &mut Vec3Lanes, n: Vec3) {
+    let normal = lanes::splat(n);
+    let push = |f: &Chunk| -lanes::dot(*f, normal);
+    let (mut total, mut pressing) = (0.0f32, 0.0f32);
+    let mut left = forces.len();
+    for f in forces.chunks() {
+        for &p in push(f).as_array().iter().take(left) {
+            total += p;
+            pressing += p.max(0.0);
+        }
+        left = left.saturating_sub(LANES);
+    }
     if total <= 0.0 || pressing <= total {
         return; // nothing pulls, or nothing presses
     }
-    let scale = total / pressing;
-    for f in forces.iter_mut() {
-        let push = -f.dot(n);
-        *f -= (push.max(0.0) * scale - push) * n;
+    let scale = f32x4::splat(total / pressing);
+    for f in forces.chunks_mut() {
+        let p = push(f);
+        let kept = p.max(f32x4::ZERO) * scale - p;
+        *f = lanes::sub(*f, lanes::scale(kept, normal));
     }
 }
 
@@ -224,11 +259,27 @@ pub(crate) struct PatchStep {
 /// Buffers reused from step to step.
 #[derive(Debug, Default)]
 pub(crate) struct PatchScratch {
-    deviations: Vec<Vec3>,
-    sample_forces: Vec<Vec3>,
-    /// `(force on the object, point)` per sample: each spread appends its
-    /// contact's.
-    pub applied: Vec<(Vec3, Vec3)>,
+    deviations: Vec3Lanes,
+    /// The last spread contact's forces on the object (N), per sample.
+    forces: Vec3Lanes,
+    /// Its samples' points (world, m).
+    points: Vec3Lanes,
+}
+
+impl PatchScratch {
+    /// Forgets the last contact's forces: a contact that applies none.
+    #[inline]
+    pub fn clear(&mut self) {
+        self.forces.clear();
+        self.points.clear();
+    }
+
+    /// Calls `f` with the last spread contact's force on the object (N)
+    /// and its point (world, m), per sample, in sample order.
+    #[inline]
+    pub fn for_each_applied(&self, f: impl FnMut(Vec3, Vec3)) {
+        self.forces.for_each_with(&self.points, f);
+    }
 }
 
 /// Spreads a contact's force over its skin patch: each sample keeps its
@@ -236,8 +287,11 @@ pub(crate) struct PatchScratch {
 /// [`Rocking`]), limited by its own share of the friction cone (a sample
 /// beyond it slips by the slip rule, which is how a patch slips in
 /// torsion). No sample pulls ([`push_only`]). Writes the samples' world
-/// points to `points` and appends `(force on the object, point)` per
-/// sample to `scratch.applied`.
+/// points to `points` and leaves `(force on the object, point)` per
+/// sample in `scratch` ([`PatchScratch::applied`]).
+///
+/// Four samples at a time ([`super::lanes`]): the same arithmetic, in the
+/// same order, as one sample at a time, so the same bits.
 pub(crate) fn spread(
     step: &PatchStep,
     anchor: &mut Anchor,
@@ -246,57 +300,112 @@ pub(crate) fn spread(
     points: &mut Vec<Vec3>,
 ) {
     let pose = &object.pose;
-    let (c, n) = (step.center, step.normal);
-    // Damping of the deviations, folded in as extra stretch c/γ · ė.
-    let lag = damping_lag(step.damping, step.gamma);
-    let rocking = step.rocking;
-    let normal_limit = step.normal_force / rocking.stiffness;
-    let rock = rocking.stiffness / step.gamma;
-    scratch.deviations.clear();
-    points.clear();
-    // The loop runs on glam's SIMD `Vec3A`/`Mat3A`: lane for lane the same
-    // products and sums, in the same order, as `Vec3`/`Mat3` (rustc fuses
-    // no multiply-add), so the same bits. Rotations as matrices: each is
-    // applied to every sample.
-    let object_rot = Mat3A::from(Mat3::from_quat(pose.rotation));
-    let (skin_rot, skin_rate) = (Mat3A::from(step.skin), Mat3A::from(step.skin_rate));
-    let (origin, angvel) = (Vec3A::from(pose.translation), Vec3A::from(object.angvel));
-    let (c, n) = (Vec3A::from(c), Vec3A::from(n));
-    for (ci_local, skin) in anchor.samples.iter_mut() {
-        let mut ci = origin + object_rot * Vec3A::from(*ci_local);
-        if !step.deviation_springs {
-            // The thesis's patch: each sample carries f/N where it lies.
-            scratch.deviations.push(Vec3::ZERO);
-            points.push(ci.into());
-            continue;
-        }
-        let skin_offset = Vec3A::from(*skin);
-        let rest = c + skin_rot * skin_offset;
-        let e = ci - rest;
-        let e_n =
-            if rocking.clamped { e.dot(n).clamp(-normal_limit, normal_limit) } else { e.dot(n) };
-        let mut e_t = e - e.dot(n) * n;
-        if slips(e_t.into(), step.normal_force, step.mu, step.gamma) {
-            // This sample slips: its object point moves along the surface.
-            e_t = slipped_stretch(e_t.into(), step.normal_force, step.mu, step.gamma).into();
-            let moved =
-                surface::project_to_surface(object.shape, pose, (rest + e_t + e_n * n).into());
-            *ci_local = pose.inverse_transform_point(moved);
-            ci = moved.into();
-        }
-        let e_rate = angvel.cross(ci - c) - skin_rate * skin_offset;
-        let rate_n = e_rate.dot(n);
-        let rate_t = e_rate - rate_n * n;
-        // Scaled so that γ/N times it is the rocking spring k/N on e_n.
-        let rocking_stretch = rock * (e_n + rocking.lag * rate_n);
-        scratch.deviations.push((e_t + lag * rate_t + rocking_stretch * n).into());
-        points.push(ci.into());
+    let object_rot = lanes::splat_mat(&Mat3::from_quat(pose.rotation));
+    let origin = lanes::splat(pose.translation);
+    let samples = &mut anchor.samples;
+    let len = samples.object.len();
+    scratch.deviations.reset(len);
+    scratch.points.reset(len);
+    for j in 0..samples.object.chunks().len() {
+        let ci = lanes::add(origin, lanes::mat_mul(&object_rot, samples.object.chunks()[j]));
+        scratch.points.chunks_mut()[j] = ci;
     }
-    let n = Vec3::from(n);
-    sample_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.sample_forces);
-    push_only(&mut scratch.sample_forces, n);
-    let forces = scratch.sample_forces.iter().copied();
-    scratch.applied.extend(forces.zip(points.iter().copied()));
+    if step.deviation_springs {
+        deviate(step, samples, object, scratch);
+    }
+    // Otherwise the thesis's patch: each sample carries f/N where it lies.
+    points.clear();
+    scratch.points.for_each_with(&scratch.points, |p, _| points.push(p));
+    lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);
+    lane_push_only(&mut scratch.forces, step.normal);
+}
+
+/// Each sample's deviation `e_i` (m) from its skin point, relative to C:
+/// tangentially, slipped back to its own share of the cone where it is
+/// beyond it (its object point moves along the surface); plus the damping
+/// of its rate, folded in as extra stretch; normally, scaled to the
+/// [`Rocking`] spring. Samples that slip move their points in
+/// `scratch.points` and `samples.object`.
+fn deviate(
+    step: &PatchStep,
+    samples: &mut Samples,
+    object: &ObjectView,
+    scratch: &mut PatchScratch,
+) {
+    let pose = &object.pose;
+    let rocking = step.rocking;
+    let normal_limit = f32x4::splat(step.normal_force / rocking.stiffness);
+    let rock = f32x4::splat(rocking.stiffness / step.gamma);
+    let rocking_lag = f32x4::splat(rocking.lag);
+    // Damping of the deviations, folded in as extra stretch c/γ · ė.
+    let lag = f32x4::splat(damping_lag(step.damping, step.gamma));
+    let cone = f32x4::splat(static_stretch_squared(step.normal_force, step.mu, step.gamma));
+    let (c, n) = (lanes::splat(step.center), lanes::splat(step.normal));
+    let angvel = lanes::splat(object.angvel);
+    let (skin_rot, skin_rate) = (lanes::splat_mat(&step.skin), lanes::splat_mat(&step.skin_rate));
+    for j in 0..samples.object.chunks().len() {
+        let skin = samples.skin.chunks()[j];
+        let mut ci = scratch.points.chunks()[j];
+        let rest = lanes::add(c, lanes::mat_mul(&skin_rot, skin));
+        let e = lanes::sub(ci, rest);
+        let e_dot_n = lanes::dot(e, n);
+        let e_n =
+            if rocking.clamped { e_dot_n.fast_clamp(-normal_limit, normal_limit) } else { e_dot_n };
+        let mut e_t = lanes::sub(e, lanes::scale(e_dot_n, n));
+        let slipping = lanes::dot(e_t, e_t).simd_gt(cone) & samples.object.valid(j);
+        if slipping.any() {
+            // Those samples slip: their object points move along the surface.
+            let mask = slipping.to_bitmask();
+            for k in (0..LANES).filter(|k| mask & (1 << k) != 0) {
+                let slipped =
+                    slipped_stretch(lanes::lane(&e_t, k), step.normal_force, step.mu, step.gamma);
+                let e_n_k = e_n.as_array()[k];
+                let target = lanes::lane(&rest, k) + slipped + e_n_k * step.normal;
+                let moved = surface::project_to_surface(object.shape, pose, target);
+                samples.object.set(j * LANES + k, pose.inverse_transform_point(moved));
+                lanes::set_lane(&mut ci, k, moved);
+                lanes::set_lane(&mut e_t, k, slipped);
+            }
+            scratch.points.chunks_mut()[j] = ci;
+        }
+        let e_rate =
+            lanes::sub(lanes::cross(angvel, lanes::sub(ci, c)), lanes::mat_mul(&skin_rate, skin));
+        let rate_n = lanes::dot(e_rate, n);
+        let rate_t = lanes::sub(e_rate, lanes::scale(rate_n, n));
+        // Scaled so that γ/N times it is the rocking spring k/N on e_n.
+        let rocking_stretch = rock * (e_n + rocking_lag * rate_n);
+        let deviation = lanes::add(
+            lanes::add(e_t, lanes::scale(lag, rate_t)),
+            lanes::scale(rocking_stretch, n),
+        );
+        scratch.deviations.chunks_mut()[j] = deviation;
+    }
+}
+
+/// A patch's samples: per sample, its point in the object frame (m) and
+/// its skin offset from p in the bone frame (m).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Samples {
+    pub object: Vec3Lanes,
+    pub skin: Vec3Lanes,
+}
+
+impl Samples {
+    /// Samples from `(object point, skin offset)` pairs.
+    pub fn from_pairs(pairs: impl IntoIterator<Item = (Vec3, Vec3)>) -> Samples {
+        let mut samples = Samples::default();
+        for (object, skin) in pairs {
+            samples.object.push(object);
+            samples.skin.push(skin);
+        }
+        samples
+    }
+
+    /// How many there are.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.object.len()
+    }
 }
 
 #[cfg(test)]

@@ -47,7 +47,7 @@ pub use safeguards::{
     ForceCap, damped_spring_force, damping_coefficient, limited_relative_velocity,
     speed_limited_depth, spring_at_depth,
 };
-pub use slip::{kinetic_stretch, slipped_stretch, slips};
+pub use slip::{kinetic_stretch, slipped_stretch, slips, static_stretch_squared};
 
 use glam::Vec3;
 

@@ -12,8 +12,15 @@ use glam::Vec3;
 /// `|stretch_t| > μ_st · f_n / γ`, with `f_n` the normal force (N).
 #[inline]
 pub fn slips(stretch_t: Vec3, normal_force: f32, mu: FrictionCoefficients, gamma: f32) -> bool {
+    stretch_t.length_squared() > static_stretch_squared(normal_force, mu, gamma)
+}
+
+/// `(μ_st · f_n / γ)²` (m²): the squared stretch beyond which [`slips`]
+/// says a spring slips, for code that compares many stretches at once.
+#[inline]
+pub fn static_stretch_squared(normal_force: f32, mu: FrictionCoefficients, gamma: f32) -> f32 {
     let limit = mu.static_mu * normal_force / gamma;
-    stretch_t.length_squared() > limit * limit
+    limit * limit
 }
 
 /// The tangential stretch `|C − p|_t` (m) that a slipping spring keeps: the

@@ -38,16 +38,22 @@ impl InteractionWorld {
         zeta.map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z))
     }
 
-    /// Sets each object's stability limit for this step's contacts.
+    /// Sets the stability limit of each object with a contact this step
+    /// (`step.limits[o]`; the other objects' entries are stale and unread,
+    /// so a step's cost does not grow with the scene).
     pub(super) fn stability_limits(&mut self, step: &mut StepScratch) {
         let dt = self.config.dt;
-        step.limits.clear();
         let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };
         step.limits.resize(self.objects.len(), none);
         // The kept contacts, then the new ones: the order they are updated
         // in, and of their shares of their virtual fingers' γ.
         let found = step.found.iter().map(|c| &c.contact);
-        for (c, &share) in self.contacts.iter().chain(found).zip(&step.shares) {
+        let contacts = || self.contacts.iter().chain(found.clone());
+        for c in contacts() {
+            step.limits[c.object.0 as usize] = none;
+        }
+        step.touched.clear();
+        for (c, &share) in contacts().zip(&step.shares) {
             let o = c.object.0 as usize;
             let slot = &self.objects[o];
             let body = &self.physics.bodies[slot.body];
@@ -55,11 +61,16 @@ impl InteractionWorld {
                 body.mass_properties().local_mprops.inv_principal_inertia.max_element();
             let r = c.point - body.center_of_mass();
             let w = share * (1.0 / slot.mass + r.length_squared() * inv_inertia);
-            step.limits[o].stiffness += slot.gamma * w;
-            step.limits[o].damping += self.nominal_damping(slot) * w;
-            step.limits[o].contacts += 1;
+            let limit = &mut step.limits[o];
+            if limit.contacts == 0 {
+                step.touched.push(o);
+            }
+            limit.stiffness += slot.gamma * w;
+            limit.damping += self.nominal_damping(slot) * w;
+            limit.contacts += 1;
         }
-        for limit in step.limits.iter_mut() {
+        for &o in &step.touched {
+            let limit = &mut step.limits[o];
             if !self.config.stability_limit {
                 (limit.stiffness, limit.damping) = (1.0, 1.0);
                 continue;

@@ -4,7 +4,7 @@
 use super::config::InteractionConfig;
 use super::firewall;
 use super::record::{Call, Recorder};
-use super::step::StepScratch;
+use super::step::{StepScratch, near};
 use crate::contact::{Contact, ContactEvent};
 use crate::hand::{HandId, HandPose, PoseError, Side};
 use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
@@ -70,6 +70,8 @@ pub(super) struct ObjectSlot {
     /// Set by [`InteractionWorld::reseat_contacts`]: its contacts end at
     /// the next step and begin afresh from the hand's pose then.
     pub reseat: bool,
+    /// Whether it is in [`InteractionWorld::forced`].
+    pub forced: bool,
     /// Its grab, for the grab baselines.
     pub grab: super::step::GrabSlot,
 }
@@ -94,6 +96,17 @@ pub struct InteractionWorld {
     pub(super) events: Vec<ContactEvent>,
     pub(super) time: f64,
     pub(super) scratch: StepScratch,
+    /// Objects added or put down since rapier's last step: its broad phase
+    /// has not seen them where they are (`step/near.rs`).
+    pub(super) unindexed: Vec<u32>,
+    /// Objects given hand forces this step, whose forces the next step
+    /// clears (`step/clear.rs`), each once ([`ObjectSlot::forced`]).
+    pub(super) forced: Vec<u32>,
+    /// Objects whose contacts end at the next step ([`ObjectSlot::reseat`]).
+    pub(super) reseating: Vec<u32>,
+    /// Whether a program may have written to rapier ([`Self::physics_mut`])
+    /// since the last step began: then every body's forces are cleared.
+    pub(super) external: bool,
     recorder: Option<Box<dyn Recorder>>,
 }
 
@@ -113,6 +126,10 @@ impl InteractionWorld {
             events: Vec::new(),
             time: 0.0,
             scratch: StepScratch::new(&config),
+            unindexed: Vec::new(),
+            forced: Vec::new(),
+            reseating: Vec::new(),
+            external: false,
             recorder: None,
         })
     }
@@ -154,6 +171,7 @@ impl InteractionWorld {
     /// of objects added with [`Self::add_object`]: the world indexes them.
     /// What is written here bypasses the NaN firewall (`firewall.rs`).
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
+        self.external = true;
         &mut self.physics
     }
 
@@ -194,11 +212,15 @@ impl InteractionWorld {
         let firewall::Admitted { shape, gamma, diameter } =
             firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
         let pose = Pose::from_parts(desc.position, desc.rotation);
-        let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose));
-        let collider =
-            ColliderBuilder::new(shape).mass(desc.mass).friction(desc.material.surface_friction);
-        let collider = self.physics.insert_collider(collider, Some(body));
         let id = ObjectId(self.objects.len() as u32);
+        let tag = near::object_tag(id);
+        let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose).user_data(tag));
+        let collider = ColliderBuilder::new(shape)
+            .mass(desc.mass)
+            .friction(desc.material.surface_friction)
+            .user_data(tag);
+        let collider = self.physics.insert_collider(collider, Some(body));
+        self.unindexed.push(id.0);
         self.objects.push(ObjectSlot {
             name: desc.name.clone(),
             body,
@@ -209,6 +231,7 @@ impl InteractionWorld {
             mass: desc.mass,
             hand_force: Vec3::ZERO,
             reseat: false,
+            forced: false,
             grab: Default::default(),
         });
         self.record(|| Call::AddObject(desc.clone()));
@@ -335,6 +358,7 @@ impl InteractionWorld {
     pub fn reseat_contacts(&mut self, id: ObjectId) -> Result<(), WorldError> {
         let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
         slot.reseat = true;
+        self.reseating.push(id.0);
         self.record(|| Call::ReseatContacts(id.0));
         Ok(())
     }
@@ -354,6 +378,7 @@ impl InteractionWorld {
         let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
         let rotation = firewall::placement(&slot.name, position, rotation)?;
         slot.reseat = true;
+        self.reseating.push(id.0);
         self.end_grab(id.0 as usize);
         let slot = &self.objects[id.0 as usize];
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
@@ -365,6 +390,7 @@ impl InteractionWorld {
         // contacts found before it must see the object where it now is.
         let physics = &mut self.physics;
         physics.bodies.propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+        self.unindexed.push(id.0);
         self.record(|| Call::PlaceObject(id.0, position, rotation));
         Ok(())
     }

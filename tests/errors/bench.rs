@@ -36,7 +36,7 @@ fn a_python_without_mujoco_says_what_to_install() {
 
 #[test]
 fn bench_json_has_the_reports_shape() {
-    let (code, stdout, stderr) = run(&["bench", "--steps", "20", "--json"]);
+    let (code, stdout, stderr) = run(&["bench", "--steps", "20", "--objects", "25,60", "--json"]);
     assert_eq!(code, Some(0), "{stderr}");
     let json: Value = serde_json::from_str(&stdout).expect("one JSON object");
     let keys = |v: &Value| -> Vec<String> {
@@ -44,7 +44,7 @@ fn bench_json_has_the_reports_shape() {
         keys.sort();
         keys
     };
-    assert_eq!(keys(&json), ["mujoco", "reference", "sweep"]);
+    assert_eq!(keys(&json), ["mujoco", "objects", "reference", "sweep"]);
     assert_eq!(json["mujoco"], Value::Null);
     let times = ["full_us", "interaction_us", "rapier_us"];
     let positive = |v: &Value| v.as_f64().is_some_and(|x| x.is_finite() && x > 0.0);
@@ -69,6 +69,17 @@ fn bench_json_has_the_reports_shape() {
     for state in ["asleep", "awake"] {
         assert_eq!(keys(&reference[state]), times);
         assert!(times.iter().all(|t| positive(&reference[state][t])));
+    }
+    // The cluttered scenes: the same 32 bones press among more objects.
+    let objects = json["objects"].as_array().expect("an array");
+    assert_eq!(objects.iter().map(|o| o["objects"].clone()).collect::<Vec<_>>(), [25, 60]);
+    for row in objects {
+        let mut expected = vec!["awake", "bones_pressing", "objects"];
+        expected.extend(times);
+        expected.sort();
+        assert_eq!(keys(row), expected);
+        assert_eq!(row["bones_pressing"], 32);
+        assert!(times.iter().all(|t| positive(&row[t])), "{row}");
     }
     let report: BenchReport = serde_json::from_value(json).expect("a BenchReport");
     assert!(report.mujoco.is_none());

@@ -118,7 +118,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
     use coulomb_hands::eval::{AccuracyStudy, MethodResult, ThesisResult};
     use coulomb_hands::output::report;
     use coulomb_hands::run::bench::{
-        BenchReport, MujocoStep, ReferenceScene, StepTimes, SweepPoint,
+        BenchReport, MujocoStep, ObjectsPoint, ReferenceScene, StepTimes, SweepPoint,
     };
     let times = StepTimes { interaction_us: 1.0, rapier_us: 2.0, full_us: 3.0 };
     let sweep = vec![SweepPoint { bones: 6, hands: 1, samples_per_contact: 8, times }];
@@ -127,7 +127,8 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         ReferenceScene { bones_pressing: 32, objects: 70, asleep, awake, settling_us: 9.0 };
     let settings = "pyramidal, Euler".to_string();
     let mujoco = MujocoStep { step_us: 700.0, settings, ratio_awake: 0.03, ratio_asleep: 0.01 };
-    let bench = BenchReport { sweep, reference, mujoco: Some(mujoco) };
+    let objects = vec![ObjectsPoint { objects: 1500, bones_pressing: 30, awake: 19, times }];
+    let bench = BenchReport { sweep, reference, mujoco: Some(mujoco), objects };
     let text = serde_json::to_string(&bench).unwrap();
     // The same type: what bench writes, the report reads back whole.
     assert_eq!(serde_json::from_str::<report::BenchReport>(&text).unwrap(), bench);
@@ -192,7 +193,7 @@ fn numbers(cell: &str) -> Option<Vec<f64>> {
 fn a_plain_report_runs_the_study_and_the_bench_itself() {
     let dir = Scratch::new("report-self");
     let out = dir.text("out");
-    let tiny = ["--users", "1", "--trials", "1", "--steps", "20"];
+    let tiny = ["--users", "1", "--trials", "1", "--steps", "20", "--objects", "20,45"];
     let reduced = ["--scenarios", "push", "--replays", "data/leap/pinch.json.lz"];
     let command = ["report", "--out", &out];
     let args: Vec<&str> = command.iter().chain(&tiny).chain(&reduced).copied().collect();
@@ -205,6 +206,8 @@ fn a_plain_report_runs_the_study_and_the_bench_itself() {
     assert!(page.contains("eval sweep --json &gt; sweep.json"));
     assert!(page.contains(" build): 1 synthetic users × 1 trials, seed 1, methods coulomb,"));
     assert!(page.contains(" build): 20 timed steps per figure; the reference scene with 16"));
+    // Step time against objects: the plot.
+    assert!(page.contains("Step time against objects in the scene"));
     // Every method's one trial, completed with an error on the board or
     // counted as failed.
     let diagonal_mm = SQUARES as f64 * SQUARE as f64 * 2f64.sqrt() * 1e3;
@@ -233,6 +236,12 @@ fn a_plain_report_runs_the_study_and_the_bench_itself() {
     for state in ["tower asleep", "tower awake"] {
         let cells = row(&page, state);
         assert!(timed(&cells) == 3 && numbers(&cells[3]).unwrap()[0] > 0.0, "{cells:?}");
+    }
+    // A row per cluttered scene: its objects, the 32 bones pressing, times.
+    for objects in ["20", "45"] {
+        let cells = row(&page, objects);
+        assert_eq!(cells[2], "32", "{cells:?}");
+        assert!(timed(&cells[2..]) == 3 && numbers(&cells[5]).unwrap()[0] > 0.0, "{cells:?}");
     }
 }
 

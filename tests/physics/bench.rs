@@ -6,7 +6,8 @@
 use crate::position;
 use coulomb_hands::InteractionWorld;
 use coulomb_hands::run::bench::{
-    SWEEP_BONES, WARM_UP, bench_config, bones_pressing, held_boxes_scene, keep_awake, sweep_scene,
+    SWEEP_BONES, WARM_UP, bench_config, bones_pressing, cluttered_scene, held_boxes_scene,
+    keep_awake, sweep_scene,
 };
 use coulomb_hands::run::drive::{Driver, StepView};
 
@@ -63,5 +64,28 @@ fn the_reference_scene_presses_32_bones_and_its_tower_sleeps_or_stays_awake() {
             let tower = name.starts_with("block");
             assert_eq!(state.sleeping, tower && !awake, "{name}, sleeping off: {awake}");
         }
+    }
+}
+
+#[test]
+fn a_cluttered_scene_holds_its_boxes_while_its_clutter_rests_asleep() {
+    let mut world = cluttered_scene(bench_config(), 340).expect("a valid scene");
+    assert_eq!(world.object_count(), 340);
+    let start: Vec<_> = world.object_ids().map(|id| position(&world, id)).collect();
+    steps(&mut world, 1000, |_| {});
+    steps(&mut world, 150, |world| assert_eq!(bones_pressing(world), 32));
+    boxes_held(&world, &start);
+    for id in world.object_ids() {
+        let name = world.object_name(id).expect("object exists");
+        if !name.starts_with("clutter") {
+            continue;
+        }
+        let state = world.object_state(id).expect("object exists");
+        let moved = (state.position - start[id.0 as usize]).length();
+        assert!(
+            moved < 2e-3 && state.sleeping,
+            "{name} moved {moved} m, asleep {}",
+            state.sleeping
+        );
     }
 }

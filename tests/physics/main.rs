@@ -16,6 +16,7 @@ mod lifecycle;
 mod live;
 mod live_feed;
 mod meshes;
+mod nearby;
 mod pinch;
 mod push;
 mod recordings;

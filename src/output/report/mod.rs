@@ -172,6 +172,25 @@ pub struct BenchReport {
     pub reference: ReferenceScene,
     /// MuJoCo's step on the same scene, when it was measured.
     pub mujoco: Option<MujocoStep>,
+    /// Step time against objects in the scene (`bench --objects`), the
+    /// same 32 bones pressing; absent from older files.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub objects: Vec<ObjectsPoint>,
+}
+
+/// Step time in a cluttered scene of a number of objects
+/// (`run::bench::cluttered_scene`), rapier's sleeping on.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ObjectsPoint {
+    /// Objects in the world.
+    pub objects: usize,
+    /// Bones pressing on a box after the run.
+    pub bones_pressing: usize,
+    /// Objects awake after the run (the held ones, and what still moves).
+    pub awake: usize,
+    /// The step times, as fields of the point itself in the JSON.
+    #[serde(flatten)]
+    pub times: StepTimes,
 }
 
 /// Step time at one number of bones in contact.

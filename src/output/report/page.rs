@@ -4,8 +4,8 @@
 use super::plots;
 use super::study_page::{self, ABLATION_COMMAND, SWEEP_COMMAND};
 use super::{
-    AccuracyStudy, BenchReport, Header, ReplayRun, ReportData, ScenarioRun, Sourced, StepTimes,
-    THESIS_FIG_5_6, THESIS_TABLE_5_2, Verdict, thesis_name,
+    AccuracyStudy, BenchReport, Header, ObjectsPoint, ReplayRun, ReportData, ScenarioRun, Sourced,
+    StepTimes, THESIS_FIG_5_6, THESIS_TABLE_5_2, Verdict, thesis_name,
 };
 use std::fmt::Write;
 
@@ -367,15 +367,8 @@ fn performance(p: &mut String, b: &BenchReport) {
         .map(|s| {
             let t = s.times;
             let per_bone = if s.bones > 0 { t.full_us / s.bones as f64 } else { f64::NAN };
-            vec![
-                format!("#{}", s.bones),
-                format!("#{}", s.hands),
-                format!("#{}", s.samples_per_contact),
-                cell(t.interaction_us, 1),
-                cell(t.rapier_us, 1),
-                cell(t.full_us, 1),
-                cell(per_bone, 2),
-            ]
+            let counts = [s.bones, s.hands, s.samples_per_contact].map(|n| format!("#{n}"));
+            [&counts[..], &time_cells(&t), &[cell(per_bone, 2)]].concat()
         })
         .collect();
     let head = [
@@ -428,6 +421,47 @@ fn performance(p: &mut String, b: &BenchReport) {
         }
         None => p.push_str("<p class=\"note\">MuJoCo was not measured in this benchmark.</p>\n"),
     }
+    cluttered(p, &b.objects);
+}
+
+/// A step's three times as table cells: interaction layer, rapier, full.
+fn time_cells(t: &StepTimes) -> [String; 3] {
+    [t.interaction_us, t.rapier_us, t.full_us].map(|us| cell(us, 1))
+}
+
+/// The cluttered scenes (`bench --objects`): step time against objects.
+fn cluttered(p: &mut String, objects: &[ObjectsPoint]) {
+    if objects.is_empty() {
+        return;
+    }
+    p.push_str(
+        "<h3>Cluttered scenes</h3>\n<p>The reference scene's hands and 16 held boxes among \
+         boxes resting on a table below the hands and on shelves around the room (rapier's \
+         sleeping on): the interaction layer's cost follows what the hands are near, not the \
+         size of the scene.</p>\n<div class=\"row\">",
+    );
+    let caption = "Time per step (µs) against objects in the scene: the interaction layer, \
+                   rapier's step and the full step.";
+    plot(p, &plots::step_time_objects(objects), caption);
+    let mut sorted: Vec<_> = objects.iter().collect();
+    sorted.sort_by_key(|o| o.objects);
+    let rows: Vec<Vec<String>> = sorted
+        .iter()
+        .map(|o| {
+            let counts = [o.objects, o.awake, o.bones_pressing].map(|n| format!("#{n}"));
+            [&counts[..], &time_cells(&o.times)].concat()
+        })
+        .collect();
+    let head = [
+        "objects",
+        "awake",
+        "bones pressing",
+        "interaction layer (µs)",
+        "rapier (µs)",
+        "full step (µs)",
+    ];
+    table(p, &head, &rows);
+    p.push_str("</div>\n");
 }
 
 fn verdicts(p: &mut String, checks: &[Verdict]) {

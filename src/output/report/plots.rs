@@ -3,7 +3,7 @@
 //! saying so instead. Non-finite values are left out; empty data gives
 //! empty axes.
 
-use super::{BenchReport, MethodResult, ObjectSeries, ScenarioRun, SweepPoint};
+use super::{BenchReport, MethodResult, ObjectSeries, ObjectsPoint, ScenarioRun, SweepPoint};
 use plotters::coord::Shift;
 use plotters::coord::combinators::LogCoord;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
@@ -269,16 +269,47 @@ fn draw_box<'a>(
 fn sweep_lines(sweep: &[SweepPoint]) -> Vec<Line<'static>> {
     let mut points: Vec<&SweepPoint> = sweep.iter().collect();
     points.sort_by_key(|p| (p.bones, p.hands));
-    let part = |p: &SweepPoint, i: usize| parts(&p.times)[i].0;
+    part_lines(points.iter().map(|p| (p.bones as f64, &p.times)))
+}
+
+/// A step's three parts as lines through `(x, times)`, in that order.
+fn part_lines<'t>(
+    points: impl Iterator<Item = (f64, &'t super::StepTimes)> + Clone,
+) -> Vec<Line<'static>> {
     PARTS
         .iter()
         .enumerate()
         .map(|(i, &(label, color))| {
-            let xy = points.iter().map(|p| (p.bones as f64, part(p, i)));
+            let xy = points.clone().map(|(x, t)| (x, parts(t)[i].0));
             let points = xy.filter(|(_, y)| plottable(*y)).collect();
             Line { label, color, points, markers: true }
         })
         .collect()
+}
+
+/// Step time against objects in the scene (`bench --objects`), the same 32
+/// bones pressing throughout.
+pub(super) fn step_time_objects(objects: &[ObjectsPoint]) -> String {
+    let mut points: Vec<&ObjectsPoint> = objects.iter().collect();
+    points.sort_by_key(|p| p.objects);
+    let lines = part_lines(points.iter().map(|p| (p.objects as f64, &p.times)));
+    let ys = finite(lines.iter().flat_map(|l| l.points.iter().map(|p| p.1)));
+    let xs = finite(objects.iter().map(|p| p.objects as f64));
+    svg((560, 400), |root| {
+        let title = "Step time against objects in the scene";
+        let mut chart = chart(root, title, up_to_max(&xs, 100.0), up_to_max(&ys, 1.0))?;
+        chart
+            .configure_mesh()
+            .max_light_lines(2)
+            .x_desc("objects in the scene (32 bones pressing)")
+            .x_label_formatter(&tick)
+            .y_desc("time per step (µs)")
+            .y_label_formatter(&tick)
+            .label_style(font(14))
+            .draw()?;
+        draw_lines(&mut chart, &lines)?;
+        legend_box(&mut chart, SeriesLabelPosition::UpperLeft)
+    })
 }
 
 /// The axes of step time (µs) against bones in contact.

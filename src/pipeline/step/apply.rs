@@ -1,5 +1,6 @@
 //! Stage 6: a contact's forces go to rapier.
 
+use crate::contact::patch::PatchScratch;
 use crate::friction;
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::firewall;
@@ -7,22 +8,44 @@ use crate::scene::ObjectId;
 use glam::Vec3;
 
 impl InteractionWorld {
-    /// Applies a contact's sample forces `(force, point)` to its object with
-    /// rapier's `add_force_at_point`, skipping any that is not finite, and
-    /// adds them to the object's total hand force
+    /// Applies a contact's sample forces to its object, as rapier's
+    /// `add_force_at_point` would one by one, skipping any that is not
+    /// finite, and adds them to the object's total hand force
     /// ([`friction::total_force`]: the samples of a contact share its force
     /// exactly, so their sum is the contacts' sum).
-    pub(super) fn apply_forces(&mut self, object: ObjectId, forces: &[(Vec3, Vec3)]) {
+    ///
+    /// The body's force and torque are summed here and written back once:
+    /// the same sums, in the same order, as `add_force_at_point` per sample
+    /// (so the same bits), without its per-sample checks and wake-ups.
+    pub(super) fn apply_forces(&mut self, object: ObjectId, patch: &PatchScratch) {
         let slot = &mut self.objects[object.0 as usize];
+        if !slot.forced {
+            slot.forced = true;
+            self.forced.push(object.0);
+        }
         let body = &mut self.physics.bodies[slot.body];
-        let finite = firewall::forces(forces);
-        // One pass: each force is applied as it is added to the total.
-        slot.hand_force = friction::total_force(
-            slot.hand_force,
-            finite.map(|&(f, at)| {
-                body.add_force_at_point(f, at, true);
-                f
-            }),
-        );
+        let dynamic = body.is_dynamic();
+        let com = body.center_of_mass();
+        let (mut force, mut torque) = (body.user_force(), body.user_torque());
+        let (mut total, mut pushed) = (slot.hand_force, false);
+        patch.for_each_applied(|f, at| {
+            if !firewall::force(f, at) {
+                return;
+            }
+            total = friction::total_force(total, [f]);
+            if dynamic && f != Vec3::ZERO {
+                force += f;
+                torque += (at - com).cross(f);
+                pushed = true;
+            }
+        });
+        slot.hand_force = total;
+        if pushed {
+            body.reset_forces(false);
+            body.reset_torques(false);
+            body.add_force(force, false);
+            body.add_torque(torque, false);
+            body.wake_up(true);
+        }
     }
 }

@@ -7,12 +7,35 @@ impl InteractionWorld {
     /// Clears last step's user forces and torques, and each object's hand
     /// force total. rapier keeps user forces until they are cleared, and
     /// `reset_forces` does not clear torques.
+    ///
+    /// Only the objects the hands pushed last step carry any, so only they
+    /// are cleared: a body written to through rapier's mutable accessors
+    /// counts as modified in rapier's next step, and touching every body
+    /// would make both this stage and rapier's step grow with the scene.
+    /// After [`Self::physics_mut`], which may have added forces anywhere,
+    /// every body that carries a force or torque is cleared.
     pub(super) fn clear_forces(&mut self) {
-        for slot in self.objects.iter_mut() {
+        if std::mem::take(&mut self.external) {
+            for slot in self.objects.iter_mut() {
+                let body = &self.physics.bodies[slot.body];
+                let loaded = body.user_force() != Vec3::ZERO || body.user_torque() != Vec3::ZERO;
+                if loaded && let Some(body) = self.physics.bodies.get_mut(slot.body) {
+                    body.reset_forces(false);
+                    body.reset_torques(false);
+                }
+                slot.hand_force = Vec3::ZERO;
+                slot.forced = false;
+            }
+            self.forced.clear();
+            return;
+        }
+        for o in self.forced.drain(..) {
+            let slot = &mut self.objects[o as usize];
             let body = &mut self.physics.bodies[slot.body];
             body.reset_forces(false);
             body.reset_torques(false);
             slot.hand_force = Vec3::ZERO;
+            slot.forced = false;
         }
     }
 }

@@ -37,8 +37,8 @@ impl InteractionWorld {
             true
         });
         self.contacts = contacts;
-        for slot in self.objects.iter_mut() {
-            slot.reseat = false;
+        for o in self.reseating.drain(..) {
+            self.objects[o as usize].reseat = false;
         }
     }
 }

@@ -6,7 +6,8 @@
 //!
 //! 1. `clear.rs`: last step's hand forces are cleared;
 //! 2. `keep.rs`: existing contacts are kept or end;
-//! 3. `find.rs`: new contacts begin, found by the collision driver;
+//! 3. `find.rs`: new contacts begin, found by the collision driver among
+//!    the objects rapier's broad phase puts near each hand (`near.rs`);
 //! 4. `../stability.rs`: each object's stability limit on γ and damping;
 //! 5. `update.rs`: each contact evaluates the contact law;
 //! 6. `apply.rs`: its forces go to rapier, and are added to its object's
@@ -25,6 +26,7 @@ mod clear;
 mod find;
 mod grab;
 mod keep;
+pub(super) mod near;
 mod share;
 mod update;
 
@@ -42,7 +44,6 @@ use crate::contact::{
 use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
-use rapier3d::parry::bounding_volume::Aabb;
 
 impl InteractionWorld {
     /// One full step: hand forces, then the physics engine.
@@ -87,7 +88,7 @@ impl InteractionWorld {
                 }
             };
             if alive {
-                self.apply_forces(contact.object, &step.patch.applied);
+                self.apply_forces(contact.object, &step.patch);
                 contacts.swap(live, i);
                 live += 1;
             }
@@ -99,7 +100,7 @@ impl InteractionWorld {
             let Some(press) = step.presses[index] else { continue };
             let touch = Touch { press, proximity, motion, index };
             if self.update_contact(&mut contact, &touch, true, &mut step) {
-                self.apply_forces(contact.object, &step.patch.applied);
+                self.apply_forces(contact.object, &step.patch);
                 contacts.push(contact);
             }
         }
@@ -117,6 +118,8 @@ impl InteractionWorld {
     pub fn step_physics(&mut self) {
         self.record(|| Call::Step);
         self.physics.step();
+        // rapier's broad phase has now seen every object where it was.
+        self.unindexed.clear();
         self.time += self.config.dt as f64;
         for hand in self.hands.iter_mut() {
             hand.prev = hand.pose.clone();
@@ -203,9 +206,12 @@ pub(crate) struct StepScratch {
     /// The contacts found this step.
     pub(super) found: Vec<Candidate>,
     pub(super) detector: Detector,
-    /// Each object's bounding box this step.
-    pub(super) boxes: Vec<Aabb>,
+    /// The objects near the hand being searched, and their boxes.
+    pub(super) near: near::Nearby,
+    /// Per object, its stability limit this step; read only for objects
+    /// with contacts, the `touched` ones.
     pub(super) limits: Vec<StabilityScale>,
+    pub(super) touched: Vec<usize>,
     pub(super) patch: PatchScratch,
     /// The contact law's settings, from the world's config.
     pub(super) settings: LawSettings,

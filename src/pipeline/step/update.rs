@@ -7,7 +7,7 @@ use crate::pipeline::InteractionWorld;
 impl InteractionWorld {
     /// Updates one kept or new contact with its share of its virtual
     /// finger's γ, under its object's stability limit ([`Contact::update`]),
-    /// leaving its sample forces in `step.patch.applied`. A contact that
+    /// leaving its sample forces in `step.patch`. A contact that
     /// has ended gets its `Ended` event and `false`; a new one that lives
     /// gets its `Began` event.
     pub(super) fn update_contact(
@@ -19,7 +19,7 @@ impl InteractionWorld {
     ) -> bool {
         let o = contact.object.0 as usize;
         let object = self.object_view(o, step.limits[o]).shared(step.shares[touch.index]);
-        step.patch.applied.clear();
+        step.patch.clear();
         let settings = &step.settings;
         let Touch { press, proximity, motion, .. } = touch;
         let alive = contact.update(

@@ -12,6 +12,10 @@
 //!   tower falls asleep in its first second, which is timed apart as the
 //!   settling figure) and with sleeping off ([`keep_awake`]: the tower
 //!   stays awake, as it does while a hand works on it);
+//! * the **cluttered scenes** ([`cluttered_scene`]): the reference scene's
+//!   hands and held boxes among 70 to thousands of resting boxes, to show
+//!   that the interaction layer's cost follows what the hands are near,
+//!   not the size of the scene;
 //! * [`mujoco`]: `bench/mujoco_reference.py` times MuJoCo's `mj_step` on
 //!   the same reference scene, in a Python subprocess.
 //!
@@ -20,9 +24,13 @@
 //! moves it little.
 
 pub mod mujoco;
+mod objects;
 mod scene;
 
-pub use crate::output::report::{BenchReport, MujocoStep, ReferenceScene, StepTimes, SweepPoint};
+pub use crate::output::report::{
+    BenchReport, MujocoStep, ObjectsPoint, ReferenceScene, StepTimes, SweepPoint,
+};
+pub use objects::{DEFAULT_OBJECTS, HELD, MAX_OBJECTS, cluttered_scene};
 pub use scene::{BOXES_PER_HAND, MAX_HANDS, held_boxes_scene, sweep_scene};
 
 use super::RunError;
@@ -61,6 +69,9 @@ pub struct BenchOptions {
     pub tower: bool,
     /// The Python to run MuJoCo's side with, if it is wanted.
     pub mujoco: Option<PathBuf>,
+    /// Objects in each cluttered scene timed ([`HELD`] to [`MAX_OBJECTS`]
+    /// each); none for no cluttered scenes.
+    pub objects: Vec<usize>,
 }
 
 impl BenchOptions {
@@ -75,7 +86,8 @@ impl BenchOptions {
     pub fn total_steps(&self) -> u64 {
         let sweep = SWEEP_BONES.len() * (WARM_UP + self.steps);
         let reference = ONE_SECOND + self.steps + WARM_UP + self.steps;
-        (sweep + reference) as u64
+        let objects = self.objects.len() * (ONE_SECOND + self.steps);
+        (sweep + reference + objects) as u64
     }
 }
 
@@ -128,6 +140,10 @@ pub fn run(
         sweep.push(SweepPoint { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
     }
     let reference = reference(options, progress)?;
+    let mut objects = Vec::with_capacity(options.objects.len());
+    for &n in &options.objects {
+        objects.push(cluttered(n, options.steps, progress)?);
+    }
     let mujoco = match &options.mujoco {
         Some(python) => {
             let run = mujoco::run(python, options.steps, options.boxes, options.tower)?;
@@ -140,7 +156,35 @@ pub fn run(
         }
         None => None,
     };
-    Ok(BenchReport { sweep, reference, mujoco })
+    Ok(BenchReport { sweep, reference, mujoco, objects })
+}
+
+/// The cluttered scene of `objects` objects: its first second untimed
+/// (the clutter settles and falls asleep), then `steps` timed.
+fn cluttered(
+    objects: usize,
+    steps: usize,
+    progress: &mut dyn FnMut(u64),
+) -> Result<ObjectsPoint, BenchError> {
+    let mut world = cluttered_scene(bench_config(), objects)?;
+    self::steps(&mut world, ONE_SECOND, progress)?;
+    let times = time_split(&mut world, steps, progress)?;
+    let awake = (0..world.object_count())
+        .filter_map(|o| world.object_state(crate::scene::ObjectId(o as u32)).ok())
+        .filter(|state| !state.sleeping)
+        .count();
+    let objects = world.object_count();
+    Ok(ObjectsPoint { objects, bones_pressing: bones_pressing(&world), awake, times })
+}
+
+/// How much the interaction layer grows from the fewest objects timed to
+/// the most: their ratio, and the object counts; `None` for fewer than two.
+pub fn objects_growth(points: &[ObjectsPoint]) -> Option<(f64, usize, usize)> {
+    let fewest = points.iter().min_by_key(|p| p.objects)?;
+    let most = points.iter().max_by_key(|p| p.objects)?;
+    (most.objects > fewest.objects).then(|| {
+        (most.times.interaction_us / fewest.times.interaction_us, fewest.objects, most.objects)
+    })
 }
 
 /// The reference scene asleep (after its timed first second) and awake.
@@ -329,7 +373,9 @@ mod tests {
         };
         let settings = mujoco::SETTINGS.to_string();
         let step = MujocoStep { step_us: 700.0, settings, ratio_awake: 0.5, ratio_asleep: 0.25 };
-        let report = BenchReport { sweep: vec![row], reference, mujoco: Some(step) };
+        let clutter = ObjectsPoint { objects: 2000, bones_pressing: 32, awake: 16, times };
+        let report =
+            BenchReport { sweep: vec![row], reference, mujoco: Some(step), objects: vec![clutter] };
         let json = serde_json::to_value(&report).unwrap();
         let expected = serde_json::json!({
             "sweep": [{"bones": 6, "hands": 1, "samples_per_contact": 8,
@@ -339,7 +385,9 @@ mod tests {
                           "awake": {"interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0},
                           "settling_us": 4.0},
             "mujoco": {"step_us": 700.0, "settings": mujoco::SETTINGS,
-                       "ratio_awake": 0.5, "ratio_asleep": 0.25}
+                       "ratio_awake": 0.5, "ratio_asleep": 0.25},
+            "objects": [{"objects": 2000, "bones_pressing": 32, "awake": 16,
+                         "interaction_us": 1.0, "rapier_us": 2.0, "full_us": 3.0}]
         });
         assert_eq!(json, expected);
         assert_eq!(serde_json::from_value::<BenchReport>(json).unwrap(), report);

@@ -1,0 +1,243 @@
+//! Vectors laid out for SIMD: a skin patch's samples, four to a register.
+//!
+//! Chunk `j` of a [`Vec3Lanes`] holds items `4j..4j + 4` as three `f32x4`
+//! (their x, y and z), so one instruction does the same arithmetic for four
+//! samples, and a dot product needs no shuffles. Each lane computes exactly
+//! the expression the scalar code would (`a·b = (x·x' + y·y') + z·z'`, a
+//! matrix times a vector column by column, no fused multiply-add), so a
+//! lane's bits are those of the scalar `glam` code. Sums across samples are
+//! taken lane by lane in sample order ([`Vec3Lanes::sum`]), as a scalar
+//! loop would, so they too are the same bits.
+//!
+//! The padding lanes of the last chunk are zeros on entry; what the
+//! arithmetic leaves in them is never read ([`Vec3Lanes::iter`] and
+//! [`Vec3Lanes::sum`] stop at [`Vec3Lanes::len`], and [`Vec3Lanes::valid`]
+//! masks them out).
+
+use glam::{Mat3, Vec3};
+use wide::f32x4;
+
+/// Items per chunk.
+pub(crate) const LANES: usize = 4;
+
+/// Four vectors: their x, y and z.
+pub(crate) type Chunk = [f32x4; 3];
+
+/// A sequence of vectors (units those of its items), in chunks of four.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct Vec3Lanes {
+    chunks: Vec<Chunk>,
+    len: usize,
+}
+
+impl Vec3Lanes {
+    /// The items of `items`, in order.
+    pub fn from_items(items: impl IntoIterator<Item = Vec3>) -> Vec3Lanes {
+        let mut lanes = Vec3Lanes::default();
+        for v in items {
+            lanes.push(v);
+        }
+        lanes
+    }
+
+    /// How many items (not lanes) there are.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Empties it, keeping its buffer.
+    #[inline]
+    pub fn clear(&mut self) {
+        self.chunks.clear();
+        self.len = 0;
+    }
+
+    /// `len` zero items, in a buffer kept from call to call.
+    #[inline]
+    pub fn reset(&mut self, len: usize) {
+        self.chunks.clear();
+        self.chunks.resize(len.div_ceil(LANES), [f32x4::ZERO; 3]);
+        self.len = len;
+    }
+
+    /// Appends an item.
+    pub fn push(&mut self, v: Vec3) {
+        if self.len.is_multiple_of(LANES) {
+            self.chunks.push([f32x4::ZERO; 3]);
+        }
+        self.len += 1;
+        self.set(self.len - 1, v);
+    }
+
+    /// Item `i` (< [`Self::len`]).
+    #[inline]
+    pub fn get(&self, i: usize) -> Vec3 {
+        let [x, y, z] = &self.chunks[i / LANES];
+        let k = i % LANES;
+        Vec3::new(x.as_array()[k], y.as_array()[k], z.as_array()[k])
+    }
+
+    /// Sets item `i` (< [`Self::len`]).
+    #[inline]
+    pub fn set(&mut self, i: usize, v: Vec3) {
+        set_lane(&mut self.chunks[i / LANES], i % LANES, v);
+    }
+
+    /// The items, in order.
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = Vec3> + '_ {
+        (0..self.len).map(|i| self.get(i))
+    }
+
+    /// Calls `f` with each item and the item at the same place in `other`
+    /// (as long as `self`), in order: a loop over whole chunks, much
+    /// cheaper than [`Self::iter`] on a hot path.
+    #[inline]
+    pub fn for_each_with(&self, other: &Vec3Lanes, mut f: impl FnMut(Vec3, Vec3)) {
+        let mut left = self.len;
+        for (a, b) in self.chunks.iter().zip(&other.chunks) {
+            let (a, b) = (a.map(f32x4::to_array), b.map(f32x4::to_array));
+            for k in 0..left.min(LANES) {
+                f(Vec3::new(a[0][k], a[1][k], a[2][k]), Vec3::new(b[0][k], b[1][k], b[2][k]));
+            }
+            left = left.saturating_sub(LANES);
+        }
+    }
+
+    /// The chunks, the last one padded.
+    #[inline]
+    pub fn chunks(&self) -> &[Chunk] {
+        &self.chunks
+    }
+
+    /// The chunks, to write.
+    #[inline]
+    pub fn chunks_mut(&mut self) -> &mut [Chunk] {
+        &mut self.chunks
+    }
+
+    /// The sum of the items, added in order from zero, as glam's `Sum`.
+    pub fn sum(&self) -> Vec3 {
+        let mut sum = Vec3::ZERO;
+        self.for_each_with(self, |v, _| sum += v);
+        sum
+    }
+
+    /// Which lanes of chunk `j` hold items: a mask of all ones for those.
+    #[inline]
+    pub fn valid(&self, j: usize) -> f32x4 {
+        let used = self.len.saturating_sub(j * LANES);
+        let lane = |k: usize| if k < used { f32::from_bits(u32::MAX) } else { 0.0 };
+        f32x4::new([lane(0), lane(1), lane(2), lane(3)])
+    }
+}
+
+/// Lane `k` of `chunk` as a vector.
+#[inline]
+pub(crate) fn lane(chunk: &Chunk, k: usize) -> Vec3 {
+    Vec3::new(chunk[0].as_array()[k], chunk[1].as_array()[k], chunk[2].as_array()[k])
+}
+
+/// Sets lane `k` of `chunk`.
+#[inline]
+pub(crate) fn set_lane(chunk: &mut Chunk, k: usize, v: Vec3) {
+    chunk[0].as_mut_array()[k] = v.x;
+    chunk[1].as_mut_array()[k] = v.y;
+    chunk[2].as_mut_array()[k] = v.z;
+}
+
+/// `v` in every lane.
+#[inline]
+pub(crate) fn splat(v: Vec3) -> Chunk {
+    [f32x4::splat(v.x), f32x4::splat(v.y), f32x4::splat(v.z)]
+}
+
+/// `a + b`, lane by lane.
+#[inline]
+pub(crate) fn add(a: Chunk, b: Chunk) -> Chunk {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// `a − b`, lane by lane.
+#[inline]
+pub(crate) fn sub(a: Chunk, b: Chunk) -> Chunk {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `s·a`, lane by lane.
+#[inline]
+pub(crate) fn scale(s: f32x4, a: Chunk) -> Chunk {
+    [s * a[0], s * a[1], s * a[2]]
+}
+
+/// `a·b = (a.x·b.x + a.y·b.y) + a.z·b.z`, lane by lane.
+#[inline]
+pub(crate) fn dot(a: Chunk, b: Chunk) -> f32x4 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// `a × b`, lane by lane.
+#[inline]
+pub(crate) fn cross(a: Chunk, b: Chunk) -> Chunk {
+    [a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0], a[0] * b[1] - b[0] * a[1]]
+}
+
+/// A matrix's columns, each in every lane: splat once, multiply many.
+pub(crate) type Mat3Lanes = [Chunk; 3];
+
+/// `m`'s columns in every lane.
+#[inline]
+pub(crate) fn splat_mat(m: &Mat3) -> Mat3Lanes {
+    [splat(m.x_axis), splat(m.y_axis), splat(m.z_axis)]
+}
+
+/// `m·v`, column by column as glam's `Mat3 * Vec3`: `(x·v.x + y·v.y) + z·v.z`.
+#[inline]
+pub(crate) fn mat_mul(m: &Mat3Lanes, v: Chunk) -> Chunk {
+    let [x, y, z] = m;
+    let row = |i: usize| x[i] * v[0] + y[i] * v[1] + z[i] * v[2];
+    [row(0), row(1), row(2)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Quat;
+
+    /// Five vectors with no simple bits: the lanes must give the scalar
+    /// code's results exactly, not nearly.
+    fn items() -> Vec<Vec3> {
+        (0..5)
+            .map(|i| {
+                let t = i as f32 + 0.37;
+                Vec3::new(t.sin() * 0.013, (1.7 * t).cos() * 0.021, (0.3 * t).tan() * 0.007)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn items_round_trip_and_padding_is_masked() {
+        let lanes = Vec3Lanes::from_items(items());
+        assert_eq!(lanes.len(), 5);
+        assert_eq!(lanes.chunks().len(), 2);
+        assert_eq!(lanes.iter().collect::<Vec<_>>(), items());
+        assert_eq!(lanes.valid(0).to_bitmask(), 0b1111);
+        assert_eq!(lanes.valid(1).to_bitmask(), 0b0001);
+        assert_eq!(lanes.sum(), items().into_iter().sum::<Vec3>());
+    }
+
+    #[test]
+    fn lane_arithmetic_has_the_scalar_bits() {
+        let (a, b) =
+            (Vec3Lanes::from_items(items()), Vec3Lanes::from_items(items().into_iter().rev()));
+        let m = Mat3::from_quat(Quat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.4));
+        let (ca, cb) = (a.chunks()[0], b.chunks()[0]);
+        for k in 0..LANES {
+            let (x, y) = (a.get(k), b.get(k));
+            assert_eq!(lane(&cross(ca, cb), k), x.cross(y));
+            assert_eq!(dot(ca, cb).as_array()[k], x.dot(y));
+            assert_eq!(lane(&mat_mul(&splat_mat(&m), ca), k), m * x);
+            assert_eq!(lane(&sub(add(ca, cb), scale(f32x4::splat(0.7), cb)), k), x + y - 0.7 * y);
+        }
+    }
+}

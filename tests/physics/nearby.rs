@@ -1,0 +1,89 @@
+//! New contacts are found among the objects rapier's broad phase puts near
+//! each hand (its BVH, as of rapier's last step): objects it has not seen
+//! yet, and objects that moved farther than its boxes' margin since, must
+//! be found all the same, at the step they come within the contact offset.
+
+use crate::position;
+use coulomb_hands::hand::rig::HandRig;
+use coulomb_hands::hand::{HandPose, Side};
+use coulomb_hands::scene::{ObjectDesc, ObjectId, ShapeDesc};
+use coulomb_hands::{ContactEventKind, InteractionConfig, InteractionWorld};
+use glam::{Quat, Vec3};
+
+/// A flat right hand, its palm's centre at `centre` (m), in a world
+/// without gravity.
+fn open_hand(centre: Vec3) -> (InteractionWorld, HandPose) {
+    let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).expect("a valid config");
+    let pose = HandRig::adult(Side::Right).pose(centre, Quat::IDENTITY, [0.0; 5]);
+    let hand = world.add_hand(Side::Right);
+    world.set_hand_pose(hand, &pose).expect("a valid pose");
+    (world, pose)
+}
+
+/// A 3 cm ball of 45 g at `at`.
+fn ball(name: &str, at: Vec3) -> ObjectDesc {
+    let shape = ShapeDesc::Sphere { radius: 0.015 };
+    ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(0.03), 0.045, at) }
+}
+
+/// Whether the last step began a contact on `object`.
+fn began(world: &InteractionWorld, object: ObjectId) -> bool {
+    world.events().iter().any(|e| e.object == object && e.kind == ContactEventKind::Began)
+}
+
+/// The gap (m) between the ball's surface and the palm's grasping face.
+fn gap(world: &InteractionWorld, pose: &HandPose, ball: ObjectId) -> f32 {
+    let local = pose.palm.to_local(position(world, ball));
+    local.y - pose.palm.half_extents.y - 0.015
+}
+
+#[test]
+fn a_ball_thrown_faster_than_the_broad_phase_margin_is_caught_at_once() {
+    // 90 m/s at 1 kHz is 9 cm a step: beyond the 5 cm by which rapier's
+    // broad phase fattens its boxes, so its BVH has lost the ball by the
+    // time it reaches the palm. Gaps of 361, 271, 181, 91, then 1 mm.
+    let (mut world, pose) = open_hand(Vec3::new(0.1, 0.55, -0.2));
+    let start = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + 0.361));
+    let id = world.add_object(&ball("thrown", start)).expect("a valid ball");
+    world.step();
+    let body = world.object_body(id).expect("an object");
+    let towards = pose.palm.rotation * -Vec3::Y * 90.0;
+    world.physics_mut().bodies[body].set_linvel(towards, true);
+    let offset = world.config().contact_offset;
+    for _ in 0..8 {
+        let before = gap(&world, &pose, id);
+        world.step();
+        if before <= offset {
+            assert!(before > -0.005, "the ball went through the palm: {before} m");
+            assert!(began(&world, id), "a ball {before} m from the palm was missed");
+            return;
+        }
+        assert!(!began(&world, id), "touched {before} m away");
+    }
+    panic!("the ball never came near the palm");
+}
+
+#[test]
+fn objects_added_or_put_down_touch_the_hand_in_their_first_step() {
+    let (mut world, pose) = open_hand(Vec3::new(-0.2, 0.47, 0.05));
+    for _ in 0..3 {
+        world.step();
+    }
+    // Resting in the palm, 1 mm into it: rapier has never seen it.
+    let in_palm = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.014));
+    let added = world.add_object(&ball("added", in_palm)).expect("a valid ball");
+    world.step();
+    assert!(began(&world, added), "an object added in the palm is touched at once");
+    // One far away, then put down beside the first: its broad-phase box is
+    // still where it was.
+    let far = world.add_object(&ball("far", Vec3::new(2.0, 0.3, -1.5))).expect("a ball");
+    for _ in 0..3 {
+        world.step();
+    }
+    assert!(world.contacts_on(far).is_empty());
+    let beside = in_palm + pose.palm.rotation * Vec3::X * 0.035;
+    world.place_object(far, beside, Quat::IDENTITY).expect("a valid place");
+    world.step();
+    assert!(began(&world, far), "an object put down in the palm is touched at once");
+}
