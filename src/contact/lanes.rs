@@ -53,10 +53,11 @@ impl Vec3Lanes {
         self.len = 0;
     }
 
-    /// `len` zero items, in a buffer kept from call to call.
+    /// `len` items, in a buffer kept from call to call, to be written
+    /// chunk by chunk: what they hold before is left unspecified (zeros in
+    /// new chunks, the last call's items in kept ones).
     #[inline]
     pub fn reset(&mut self, len: usize) {
-        self.chunks.clear();
         self.chunks.resize(len.div_ceil(LANES), [f32x4::ZERO; 3]);
         self.len = len;
     }

@@ -93,6 +93,7 @@ pub(crate) struct BoneMotion {
 }
 
 /// The object as seen by one step.
+#[derive(Clone, Copy)]
 pub(crate) struct ObjectView<'a> {
     pub id: ObjectId,
     pub pose: Pose,

@@ -312,8 +312,10 @@ pub(crate) fn spread(
     }
     if step.deviation_springs {
         deviate(step, samples, object, scratch);
+    } else {
+        // The thesis's patch: each sample carries f/N where it lies.
+        scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);
     }
-    // Otherwise the thesis's patch: each sample carries f/N where it lies.
     points.clear();
     scratch.points.for_each_with(&scratch.points, |p, _| points.push(p));
     lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);

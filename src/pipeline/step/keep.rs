@@ -1,6 +1,6 @@
 //! Stage 2: existing contacts are kept, or end.
 
-use super::StepScratch;
+use super::{Kept, StepScratch};
 use crate::contact::ContactEventKind;
 use crate::friction::FrictionState;
 use crate::pipeline::InteractionWorld;
@@ -33,7 +33,7 @@ impl InteractionWorld {
                 };
                 Some(prox)
             };
-            step.kept.push(proximity);
+            step.kept.push(Kept { proximity, motion });
             true
         });
         self.contacts = contacts;

@@ -73,16 +73,15 @@ impl InteractionWorld {
         let mut contacts = std::mem::take(&mut self.contacts);
         let kept = std::mem::take(&mut step.kept);
         let mut live = 0;
-        for (i, &proximity) in kept.iter().enumerate() {
+        for (i, &Kept { proximity, motion }) in kept.iter().enumerate() {
             let contact = &mut contacts[i];
             // The poses have not changed since `keep_contacts` found it.
-            let motion = self.motion(contact.hand, contact.bone);
-            let alive = match (motion, step.presses[i]) {
-                (Some(motion), Some(press)) => {
+            let alive = match step.presses[i] {
+                Some(press) => {
                     let touch = Touch { press, proximity, motion, index: i };
                     self.update_contact(contact, &touch, false, &mut step)
                 }
-                _ => {
+                None => {
                     self.push_event(ContactEventKind::Ended, contact);
                     false
                 }
@@ -179,6 +178,14 @@ pub(super) struct Candidate {
     pub motion: BoneMotion,
 }
 
+/// A contact `keep_contacts` kept: its closest features, if it queried
+/// them, and its bone's motion this step (looked up once, for stages 4 and 6).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Kept {
+    pub proximity: Option<Proximity>,
+    pub motion: BoneMotion,
+}
+
 /// What stage 6 knows of a contact it updates.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Touch {
@@ -200,9 +207,9 @@ fn contact_key(c: &Contact) -> (ObjectId, HandId, usize) {
 /// Buffers kept from step to step, so a warm step allocates little.
 #[derive(Debug, Default)]
 pub(crate) struct StepScratch {
-    /// Per kept contact (in [`InteractionWorld::contacts`]' order): its
-    /// closest features, if `keep_contacts` queried them.
-    pub(super) kept: Vec<Option<Proximity>>,
+    /// Per kept contact (in [`InteractionWorld::contacts`]' order): what
+    /// `keep_contacts` found of it.
+    pub(super) kept: Vec<Kept>,
     /// The contacts found this step.
     pub(super) found: Vec<Candidate>,
     pub(super) detector: Detector,

@@ -2,7 +2,7 @@
 //! hand's virtual fingers ([`crate::friction::grip`]).
 
 use super::StepScratch;
-use crate::contact::{Contact, Press};
+use crate::contact::{BoneMotion, Contact, ObjectView, Press};
 use crate::friction;
 use crate::hand::HandId;
 use crate::pipeline::InteractionWorld;
@@ -19,20 +19,25 @@ impl InteractionWorld {
         step.presses.clear();
         step.sides.clear();
         let settings = step.settings;
-        for contact in self.contacts.iter() {
-            // Kept contacts' hands are tracked: `keep_contacts` ended the others.
-            let press = self.motion(contact.hand, contact.bone).map(|motion| {
-                let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
-                contact.press(&object, &motion, &settings)
-            });
-            step.presses.push(press);
+        // Each object's view once for its run of contacts (they are sorted
+        // by object): the same view, looked up once.
+        let mut view: Option<ObjectView> = None;
+        let mut press = |contact: &Contact, motion: &BoneMotion| {
+            let o = contact.object.0 as usize;
+            let object = match view {
+                Some(v) if v.id == contact.object => v,
+                _ => *view.insert(self.object_view(o, StabilityScale::NONE)),
+            };
+            Some(contact.press(&object, motion, &settings))
+        };
+        // Kept contacts' hands are tracked: `keep_contacts` ended the others.
+        for (contact, kept) in self.contacts.iter().zip(&step.kept) {
+            step.presses.push(press(contact, &kept.motion));
             step.sides.push(side_key(contact));
         }
         for candidate in step.found.iter() {
-            let c = &candidate.contact;
-            let object = self.object_view(c.object.0 as usize, StabilityScale::NONE);
-            step.presses.push(Some(c.press(&object, &candidate.motion, &settings)));
-            step.sides.push(side_key(c));
+            step.presses.push(press(&candidate.contact, &candidate.motion));
+            step.sides.push(side_key(&candidate.contact));
         }
         step.shares.clear();
         step.shares.resize(step.presses.len(), 1.0);
