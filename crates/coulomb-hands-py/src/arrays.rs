@@ -107,14 +107,22 @@ pub fn quat(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Quat> {
     Ok(Quat::from_array(q))
 }
 
+/// An `(n, C)` float64 array of `rows`.
+fn rows_array<'py, const C: usize>(
+    py: Python<'py>,
+    rows: impl Iterator<Item = [f32; C]>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let flat: Vec<f64> = rows.flat_map(|r| r.map(f64::from)).collect();
+    let n = flat.len() / C;
+    PyArray1::from_vec(py, flat).reshape([n, C])
+}
+
 /// An `(n, 3)` float64 array of `points`.
 pub fn points_array<'py>(
     py: Python<'py>,
     points: impl Iterator<Item = Vec3>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let flat: Vec<f64> = points.flat_map(|p| p.to_array().map(f64::from)).collect();
-    let n = flat.len() / 3;
-    PyArray1::from_vec(py, flat).reshape([n, 3])
+    rows_array(py, points.map(|p| p.to_array()))
 }
 
 /// An `(n, 4)` float64 array of quaternions, x, y, z, w.
@@ -122,9 +130,7 @@ pub fn quats_array<'py>(
     py: Python<'py>,
     quats: impl Iterator<Item = Quat>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let flat: Vec<f64> = quats.flat_map(|q| q.to_array().map(f64::from)).collect();
-    let n = flat.len() / 4;
-    PyArray1::from_vec(py, flat).reshape([n, 4])
+    rows_array(py, quats.map(|q| q.to_array()))
 }
 
 /// A `(n,)` array of `values`.

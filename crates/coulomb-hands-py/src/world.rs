@@ -6,6 +6,7 @@ use crate::{ArgumentError, LayoutError, SkeletonError, world_error};
 use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::layouts::{self, Layout};
 use coulomb_hands::input::skeleton;
+use coulomb_hands::run::bench;
 use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape, Scene};
 use coulomb_hands::{
@@ -91,6 +92,22 @@ impl World {
     fn new(config: Option<Config>) -> PyResult<Self> {
         let config = config.map_or_else(InteractionConfig::default, |c| c.inner);
         Ok(World { world: InteractionWorld::new(config).map_err(world_error)? })
+    }
+
+    /// The benchmark's reference scene (the CLI's `bench`): a ground, the
+    /// 54-block tower unless `tower` is False, and `boxes` (1 to 16) 3 cm,
+    /// 20 g boxes held mid-air, box k squeezed between bone k of the left
+    /// hand (id 0) and of the right hand (id 1), both posed. With `awake`,
+    /// rapier's sleeping is off, as under a moving hand.
+    #[staticmethod]
+    #[pyo3(signature = (boxes = 16, tower = true, awake = true))]
+    fn reference_scene(boxes: usize, tower: bool, awake: bool) -> PyResult<Self> {
+        let (mut world, _) =
+            bench::held_boxes_scene(bench::bench_config(), boxes, tower).map_err(world_error)?;
+        if awake {
+            bench::keep_awake(&mut world);
+        }
+        Ok(World { world })
     }
 
     /// The settings the world was made with.

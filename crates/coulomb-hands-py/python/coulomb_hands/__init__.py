@@ -2,6 +2,8 @@
 friction contact forces, on rapier3d. NumPy arrays in and out; every call is the Rust
 library's own (see the book's "From Python" page)."""
 
+from typing import TYPE_CHECKING
+
 from ._coulomb_hands import (
     BONES,
     EVENT_KINDS,
@@ -35,6 +37,12 @@ from ._coulomb_hands import (
     replay,
     run_scenario,
 )
+
+if TYPE_CHECKING:  # the arrays' dicts, typed in the stub only
+    from ._coulomb_hands import Contacts as Contacts
+    from ._coulomb_hands import Events as Events
+    from ._coulomb_hands import HandPose as HandPose
+    from ._coulomb_hands import ObjectStates as ObjectStates
 
 __all__ = [
     "BONES",

@@ -136,6 +136,12 @@ class World:
 
     def __init__(self, config: Optional[Config] = None) -> None:
         """An empty world with `config`, or the default config."""
+    @staticmethod
+    def reference_scene(boxes: int = 16, tower: bool = True, awake: bool = True) -> World:
+        """The benchmark's reference scene (`coulomb-hands bench`): a ground, the 54-block
+        tower unless `tower` is False, and `boxes` (1 to 16) 3 cm, 20 g boxes held
+        mid-air, box k squeezed between bone k of the left hand (id 0) and of the right
+        hand (id 1). With `awake`, rapier's sleeping is off, as under a moving hand."""
     @property
     def config(self) -> Config:
         """The settings the world was made with."""
