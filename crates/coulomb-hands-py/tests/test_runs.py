@@ -88,6 +88,23 @@ def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
     assert data["all_finite"]
 
 
+def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
+    args = ["--users", "1", "--trials", "2", "--seed", "17", "--method", "coulomb,thesis"]
+    args += ["--strategy", "slide", "--noise", "0.6"]
+    out = subprocess.run(
+        [str(cli()), "eval", "accuracy", "--json", *args],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    data = ch.eval_accuracy(
+        users=1, trials=2, seed=17, methods=["coulomb", "thesis"], strategies=["slide"], noise=0.6
+    )
+    assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
+    assert [m["method"] for m in data["methods"]] == ["coulomb", "thesis"]
+
+
 def test_a_scenario_runs_and_passes_its_checks() -> None:
     data = ch.run_scenario("push")
     (report,) = data["scenarios"]
