@@ -311,16 +311,9 @@ impl World {
                     .collect::<PyResult<Vec<Quat>>>()
             })
             .transpose()?;
-        let id = i64::from(hand);
-        let tracked = layouts::from_layout(
-            layout,
-            id,
-            side,
-            &positions,
-            radii.as_deref(),
-            orientations.as_deref(),
-        )
-        .map_err(|e| LayoutError::new_err(e.to_string()))?;
+        let (id, given) = (i64::from(hand), (radii.as_deref(), orientations.as_deref()));
+        let tracked = layouts::from_layout(layout, id, side, &positions, given.0, given.1)
+            .map_err(|e| LayoutError::new_err(e.to_string()))?;
         let pose = skeleton::hand_pose(&tracked, &Conversion::identity())
             .map_err(|e| SkeletonError::new_err(e.to_string()))?;
         self.world.set_hand_pose(HandId(hand), &pose).map_err(world_error)
