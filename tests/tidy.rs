@@ -18,7 +18,11 @@ fn rust_files(dirs: &[&str]) -> Vec<PathBuf> {
         for entry in entries.flatten() {
             let path = entry.path();
             if path.is_dir() {
-                walk(&path, out);
+                // A build's output (the Python package's own workspace builds into
+                // crates/coulomb-hands-py/target) is not source.
+                if !path.ends_with("target") {
+                    walk(&path, out);
+                }
             } else if path.extension().is_some_and(|e| e == "rs") {
                 out.push(path);
             }

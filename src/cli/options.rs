@@ -9,7 +9,7 @@ use coulomb_hands::input::playback::DEFAULT_GRACE;
 use coulomb_hands::output::Session;
 use coulomb_hands::output::trace::TraceFile;
 use coulomb_hands::run::observe::TraceWriter;
-use coulomb_hands::run::replay::replay_world;
+use coulomb_hands::run::replay::scene_world;
 use coulomb_hands::scene::Scene;
 use coulomb_hands::{InteractionConfig, InteractionWorld, Method, RunError};
 use std::path::PathBuf;
@@ -94,17 +94,10 @@ impl SessionArgs {
     /// `--record` asks for it.
     pub fn world(
         &self,
-        mut config: InteractionConfig,
+        config: InteractionConfig,
         scene: Option<&Scene>,
     ) -> Result<InteractionWorld, RunError> {
-        if let Some(scene) = scene {
-            config = config.with_scene(scene);
-        }
-        let mut world = replay_world(config, self.record.is_some())?;
-        if let Some(scene) = scene {
-            world.add_scene(scene)?;
-        }
-        Ok(world)
+        Ok(scene_world(config, scene, self.record.is_some())?)
     }
 
     /// Writes the session `world` recorded to `--record`'s file, if asked.

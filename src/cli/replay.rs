@@ -4,8 +4,8 @@ use super::args::parse_gamma;
 use super::options::{JsonOutput, MethodChoice, SessionArgs, TraceOutput};
 use super::{Outcome, print_objects, progress_bar};
 use coulomb_hands::input::recording::Format;
-use coulomb_hands::run::replay::{GraspObject, ReplaySummary};
-use coulomb_hands::{GammaMode, InteractionConfig, RunError};
+use coulomb_hands::run::replay::{GraspObject, ReplayOptions, ReplaySummary};
+use coulomb_hands::{GammaMode, RunError};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
@@ -39,30 +39,36 @@ pub struct ReplayArgs {
 impl ReplayArgs {
     /// One replay, a session's replay, or a soak.
     pub fn run(self) -> Outcome {
-        use coulomb_hands::output::Session;
-        use coulomb_hands::run::replay::{place_at_grasp, replay, replay_closings};
-        let scene = self.session.load_scene()?;
-        if std::fs::read_to_string(&self.file).is_ok_and(|t| Session::sniff(&t)) {
+        use coulomb_hands::run::replay::{is_session_file, place_at_grasp, replay_recording};
+        let options = ReplayOptions {
+            device: self.session.device,
+            grace: self.session.grace,
+            scene: self.session.load_scene()?,
+            gamma: self.gamma,
+            method: self.method.method,
+            object_at_grasp: self.object_at_grasp,
+            record: self.session.record.is_some(),
+        };
+        if is_session_file(&self.file) {
             if self.soak.is_some() {
                 return Err("--loop replays Leap recordings; a session file replays once".into());
             }
             return Ok(replay_session(&self.file, &self.output)?);
         }
         let recording = coulomb_hands::input::recording::load(&self.file)?;
-        let playback = recording.playback(self.session.device, self.session.grace)?;
-        let base = InteractionConfig { gamma: self.gamma, ..InteractionConfig::default() };
-        let mut world = self.session.world(self.method.method.config(base), scene.as_ref())?;
         let mut writer = self.trace.writer()?;
         let mut observers: Vec<&mut dyn coulomb_hands::run::drive::Observer> = Vec::new();
         observers.extend(writer.as_mut().map(|w| w as _));
-        let source = &recording.source_name;
         if let Some(duration) = self.soak {
+            let playback = recording.playback(options.device, options.grace)?;
+            let mut world = options.world()?;
             // A soak puts its objects back before each loop, so they must
             // exist from the start: one object, at the first closing.
             let mut fixtures = Vec::new();
             if let Some(object) = self.object_at_grasp {
                 fixtures.push(place_at_grasp(&mut world, &playback, object, 0)?.0);
             }
+            let source = &recording.source_name;
             let report =
                 soak_loop(source, &playback, &mut world, &fixtures, duration, &mut observers)?;
             if let Some(w) = writer {
@@ -74,10 +80,7 @@ impl ReplayArgs {
             }
             return Ok(());
         }
-        let summary = match self.object_at_grasp {
-            Some(object) => replay_closings(source, &playback, &mut world, object, &mut observers)?,
-            None => replay(source, &playback, &mut world, &[], &mut observers)?,
-        };
+        let (summary, mut world) = replay_recording(&recording, &options, &mut observers)?;
         drop(observers);
         if let Some(w) = writer {
             w.finish()?;
@@ -161,37 +164,10 @@ fn soak_loop(
 
 /// Replays a recorded session file and prints what its objects did.
 fn replay_session(file: &Path, output: &JsonOutput) -> Result<(), RunError> {
-    use coulomb_hands::output::Session;
-    use coulomb_hands::run::observe::Summary;
-    let session = Session::load(file)?;
-    // Objects are followed from the end of the first step, when all exist.
-    let mut summary: Option<Result<Summary, coulomb_hands::WorldError>> = None;
-    let replayed = session.replay(|w| {
-        let s = summary.get_or_insert_with(|| Summary::new(w));
-        if let Ok(s) = s
-            && let Err(e) = s.observe_world(w)
-        {
-            summary = Some(Err(e));
-        }
-    });
-    let world = replayed.map_err(|e| e.in_file(file))?;
-    let objects = match summary.transpose()? {
-        Some(s) => s.objects(&world)?,
-        None => Vec::new(),
-    };
-    let summary = serde_json::json!({
-        "session": file.display().to_string(),
-        "steps": session.steps(),
-        "objects": objects
-    });
-    output.print(&summary, |_| {
-        println!(
-            "replayed session {} ({} steps, {:.2} s)",
-            file.display(),
-            session.steps(),
-            world.time()
-        );
-        print_objects(&objects);
+    let summary = coulomb_hands::run::replay::replay_session_file(file)?;
+    output.print(&summary, |s| {
+        println!("replayed session {} ({} steps, {:.2} s)", file.display(), s.steps, s.time);
+        print_objects(&s.objects);
     })?;
     Ok(())
 }

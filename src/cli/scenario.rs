@@ -3,7 +3,7 @@
 use super::options::{JsonOutput, MethodChoice, TraceOutput};
 use super::{Outcome, progress_bar};
 use coulomb_hands::RunError;
-use coulomb_hands::run::scenario::{Scenario, ScenarioReport, shipped};
+use coulomb_hands::run::scenario::{Scenario, ScenarioReport, ScenarioReports, shipped};
 use std::time::Instant;
 
 /// Run a scenario of the interaction catalogue and print its checks.
@@ -37,8 +37,8 @@ impl ScenarioArgs {
         let started = Instant::now();
         let reports = self.run_all()?;
         if self.output.json {
-            let list: Vec<_> = reports.iter().map(|r| &r.0).collect();
-            println!("{}", serde_json::json!({ "scenarios": list }));
+            let scenarios = reports.iter().map(|r| &r.0).collect();
+            println!("{}", serde_json::to_string(&ScenarioReports { scenarios })?);
         } else if self.all {
             print_table(&reports, started);
         } else {
@@ -62,11 +62,11 @@ impl ScenarioArgs {
             _ => shipped().iter().map(|s| s.0.to_string()).collect(),
         };
         // Every file is checked before anything runs.
-        let mut scenarios =
-            names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
-        for s in scenarios.iter_mut() {
-            s.config = self.method.method.config(s.config);
-        }
+        let method = self.method.method;
+        let scenarios = names
+            .iter()
+            .map(|n| Scenario::find(n).map(|s| s.with_method(method)))
+            .collect::<Result<Vec<_>, _>>()?;
         let mut writer = self.trace.writer()?;
         let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
         let bar = progress_bar(self.all && !self.output.json, scenarios.len() as u64, template);

@@ -49,7 +49,7 @@
 //! as such) and coordinates within 10 m of the origin.
 
 use super::convert::Conversion;
-use super::layouts::{self, Joint, LayoutError, mediapipe, openxr, webxr};
+use super::layouts::{self, Layout, LayoutError};
 use super::{InputError, TrackedHand, TrackingFrame};
 use crate::hand::Side;
 use glam::{Quat, Vec3};
@@ -236,13 +236,6 @@ fn frame(place: &Place, v: &Value) -> Result<TrackingFrame, InputError> {
     Ok(TrackingFrame { timestamp_us: (t * 1e6).round() as i64, hands })
 }
 
-/// A layout's name and joint count, from its name in a file.
-fn layout(name: &str) -> Option<(&'static str, usize)> {
-    [("openxr", openxr::COUNT), ("webxr", webxr::COUNT), ("mediapipe", mediapipe::COUNT)]
-        .into_iter()
-        .find(|(n, _)| *n == name)
-}
-
 fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, InputError> {
     let at = |field: &str| format!("{path}.{field}");
     let o = object(place, path, v)?;
@@ -257,11 +250,12 @@ fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, Inp
             return Err(place.err(at("side"), why));
         }
     };
-    let name = o.get("layout").and_then(Value::as_str);
-    let (name, count) = name.and_then(layout).ok_or_else(|| {
+    let layout = o.get("layout").and_then(Value::as_str).and_then(|n| n.parse::<Layout>().ok());
+    let layout = layout.ok_or_else(|| {
         let got = o.get("layout").map_or("nothing".into(), Value::to_string);
-        place.err(at("layout"), format!("unknown layout {got} (known: openxr, webxr, mediapipe)"))
+        place.err(at("layout"), format!("unknown layout {got} (known: {})", Layout::KNOWN))
     })?;
+    let (name, count) = (layout.name(), layout.count());
     let joints = o.get("joints").ok_or_else(|| place.err(at("joints"), "missing"))?;
     let joints = joints.as_array().ok_or_else(|| place.err(at("joints"), "expected a list"))?;
     let positions = (0..count)
@@ -290,51 +284,27 @@ fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, Inp
         Ok(Some(x as f32))
     };
     let (grab, pinch) = (strength("grab")?, strength("pinch")?);
-    let hand = if name == "mediapipe" {
-        if let Some(key) = ["radii", "orientations"].into_iter().find(|k| o.contains_key(*k)) {
-            return Err(place.err(at(key), "mediapipe landmarks have none; leave it out"));
-        }
-        let landmarks: [Vec3; mediapipe::COUNT] = std::array::from_fn(|j| positions[j]);
-        layouts::from_mediapipe(id, side, &landmarks)
-    } else {
-        let radii = radii(place, &at("radii"), o.get("radii"), count)?;
-        let orientations = orientations(place, &at("orientations"), o.get("orientations"), count)?;
-        let joint = |j: usize| Joint {
-            position: positions[j],
-            orientation: orientations.as_ref().map_or(Quat::IDENTITY, |q| q[j]),
-            radius: radii[j],
-        };
-        if name == "openxr" {
-            let mut joints: [Joint; openxr::COUNT] = std::array::from_fn(joint);
-            if orientations.is_none() {
-                joints[openxr::PALM].orientation = layouts::palm_orientation(side, &positions);
-            }
-            layouts::from_openxr(id, side, &joints)
-        } else {
-            layouts::from_webxr(id, side, &std::array::from_fn(joint))
-        }
-    };
+    if layout == Layout::MediaPipe
+        && let Some(key) = ["radii", "orientations"].into_iter().find(|k| o.contains_key(*k))
+    {
+        return Err(place.err(at(key), "mediapipe landmarks have none; leave it out"));
+    }
+    let radii = o.get("radii").map(|r| radii(place, &at("radii"), r, count)).transpose()?;
+    let orientations = orientations(place, &at("orientations"), o.get("orientations"), count)?;
+    let hand = layouts::from_layout(
+        layout,
+        id,
+        side,
+        &positions,
+        radii.as_deref(),
+        orientations.as_deref(),
+    );
     let hand =
         hand.map_err(|e: LayoutError| place.err(format!("{path}.joints[{}]", e.joint), e.reason))?;
     Ok(TrackedHand { grab, pinch, ..hand })
 }
 
-fn radii(
-    place: &Place,
-    path: &str,
-    v: Option<&Value>,
-    count: usize,
-) -> Result<Vec<f32>, InputError> {
-    let Some(v) = v else {
-        // An average adult's finger widths, per finger (the first two
-        // OpenXR joints, palm and wrist, and WebXR's wrist have none).
-        let first_finger_joint = count - 24;
-        let default = |j: usize| match j.checked_sub(first_finger_joint) {
-            None => 0.0,
-            Some(k) => 0.0005 * super::leap::DEFAULT_WIDTHS_MM[(k + 1) / 5],
-        };
-        return Ok((0..count).map(default).collect());
-    };
+fn radii(place: &Place, path: &str, v: &Value, count: usize) -> Result<Vec<f32>, InputError> {
     let a = place.array(path, v, count)?;
     a.iter()
         .enumerate()

@@ -57,6 +57,123 @@ pub struct LayoutError {
     pub reason: String,
 }
 
+/// A tracker's joint layout.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layout {
+    /// OpenXR `XR_EXT_hand_tracking`: 26 joints, palm first, with radii.
+    OpenXr,
+    /// WebXR Hand Input: 25 joints, wrist first, with radii.
+    WebXr,
+    /// MediaPipe Hands: 21 world landmarks, wrist first, no radii.
+    MediaPipe,
+}
+
+/// A layout name that is none of [`Layout`]'s.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("unknown layout \"{0}\" (known: {known})", known = Layout::KNOWN)]
+pub struct UnknownLayout(pub String);
+
+impl Layout {
+    /// The layouts' names, for messages.
+    pub const KNOWN: &str = "openxr, webxr, mediapipe";
+
+    /// Its name in files and options: `openxr`, `webxr` or `mediapipe`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Layout::OpenXr => "openxr",
+            Layout::WebXr => "webxr",
+            Layout::MediaPipe => "mediapipe",
+        }
+    }
+
+    /// How many joints it has.
+    pub fn count(self) -> usize {
+        match self {
+            Layout::OpenXr => openxr::COUNT,
+            Layout::WebXr => webxr::COUNT,
+            Layout::MediaPipe => mediapipe::COUNT,
+        }
+    }
+
+    /// Each joint's radius (m) when a tracker gives none: an average
+    /// adult's finger widths ([`super::leap::DEFAULT_WIDTHS_MM`]), 0 for the
+    /// joints that are not on a finger (OpenXR's palm and wrist, WebXR's
+    /// wrist).
+    pub fn default_radii(self) -> Vec<f32> {
+        let count = self.count();
+        let first_finger_joint = count - 24;
+        let radius = |j: usize| match j.checked_sub(first_finger_joint) {
+            None => 0.0,
+            Some(k) => 0.0005 * super::leap::DEFAULT_WIDTHS_MM[(k + 1) / 5],
+        };
+        (0..count).map(radius).collect()
+    }
+}
+
+impl std::str::FromStr for Layout {
+    type Err = UnknownLayout;
+    fn from_str(s: &str) -> Result<Layout, UnknownLayout> {
+        [Layout::OpenXr, Layout::WebXr, Layout::MediaPipe]
+            .into_iter()
+            .find(|l| l.name() == s)
+            .ok_or_else(|| UnknownLayout(s.to_string()))
+    }
+}
+
+/// A hand from joint positions (m, y up) in `layout`'s order, with each
+/// joint's radius (m) and orientation when the tracker gives them (OpenXR
+/// and WebXR; MediaPipe has neither). Without radii, [`Layout::default_radii`];
+/// without orientations, OpenXR's palm frame comes from the wrist and the
+/// knuckles ([`palm_orientation`]). A joint recording's hands and the
+/// Python package's `set_hand_joints` both come through here.
+pub fn from_layout(
+    layout: Layout,
+    id: i64,
+    side: Side,
+    positions: &[Vec3],
+    radii: Option<&[f32]>,
+    orientations: Option<&[Quat]>,
+) -> Result<TrackedHand, LayoutError> {
+    let (name, count) = (layout.name(), layout.count());
+    let fail = |joint: usize, reason: String| LayoutError { layout: name, joint, reason };
+    for (what, n) in [("joints", Some(positions.len())), ("radii", radii.map(<[f32]>::len))]
+        .into_iter()
+        .chain([("orientations", orientations.map(<[Quat]>::len))])
+    {
+        if let Some(n) = n.filter(|&n| n != count) {
+            return Err(fail(n.min(count), format!("{n} {what}, but {name} has {count}")));
+        }
+    }
+    if layout == Layout::MediaPipe {
+        if radii.is_some() || orientations.is_some() {
+            let why = "mediapipe landmarks have no radii or orientations; leave them out";
+            return Err(fail(0, why.into()));
+        }
+        return from_mediapipe(id, side, &std::array::from_fn(|j| positions[j]));
+    }
+    let default_radii;
+    let radii = match radii {
+        Some(r) => r,
+        None => {
+            default_radii = layout.default_radii();
+            &default_radii
+        }
+    };
+    let joint = |j: usize| Joint {
+        position: positions[j],
+        orientation: orientations.map_or(Quat::IDENTITY, |q| q[j]),
+        radius: radii[j],
+    };
+    if layout == Layout::WebXr {
+        return from_webxr(id, side, &std::array::from_fn(joint));
+    }
+    let mut joints: [Joint; openxr::COUNT] = std::array::from_fn(joint);
+    if orientations.is_none() {
+        joints[openxr::PALM].orientation = palm_orientation(side, positions);
+    }
+    from_openxr(id, side, &joints)
+}
+
 /// OpenXR `XrHandJointEXT` indices.
 pub mod openxr {
     /// The palm joint (`XR_HAND_JOINT_PALM_EXT`).

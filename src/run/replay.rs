@@ -6,11 +6,13 @@ use super::closing::{ClosingVerdict, Closings};
 use super::drive::{self, Driver, Observer, RecordedHand};
 use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
 use super::observe::{ObjectSummary, Summary};
-use crate::input::playback::Playback;
+use crate::input::playback::{DEFAULT_GRACE, Playback};
+use crate::input::recording::Recording;
 use crate::output::Session;
-use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
-use crate::scene::{ObjectDesc, ObjectId, ShapeDesc, StaticDesc};
+use crate::pipeline::{InteractionConfig, InteractionWorld, Method, WorldError};
+use crate::scene::{GammaMode, ObjectDesc, ObjectId, Scene, ShapeDesc, StaticDesc};
 use glam::Vec3;
+use std::path::Path;
 
 /// The replay's numbers; `replay --json` prints exactly this.
 #[derive(Debug, Clone, serde::Serialize)]
@@ -51,6 +53,150 @@ pub fn replay_world(
     }
     world.add_static(&StaticDesc::ground(0.0, 0.5))?;
     Ok(world)
+}
+
+/// A world for `config` with `scene` in it (and the scene's gravity), over
+/// [`replay_world`]'s ground, recording its session if `record`.
+pub fn scene_world(
+    config: InteractionConfig,
+    scene: Option<&Scene>,
+    record: bool,
+) -> Result<InteractionWorld, WorldError> {
+    let config = scene.map_or(config, |s| config.with_scene(s));
+    let mut world = replay_world(config, record)?;
+    if let Some(scene) = scene {
+        world.add_scene(scene)?;
+    }
+    Ok(world)
+}
+
+/// What `replay` runs a recording with, besides the recording: the
+/// command's options, and the Python package's `replay` keywords.
+#[derive(Debug, Clone)]
+pub struct ReplayOptions {
+    /// Where the recording's origin (a desktop device) sits in the world (m).
+    pub device: Vec3,
+    /// Tracking gaps up to this long (s) are bridged.
+    pub grace: f64,
+    /// Static scenery and objects besides the ground.
+    pub scene: Option<Scene>,
+    /// Contact stiffness.
+    pub gamma: GammaMode,
+    /// How hands move objects.
+    pub method: Method,
+    /// An object put at every closing of a hand ([`replay_closings`]).
+    pub object_at_grasp: Option<GraspObject>,
+    /// Record the session ([`Session::take`] gets it from the world).
+    pub record: bool,
+}
+
+impl Default for ReplayOptions {
+    fn default() -> Self {
+        ReplayOptions {
+            device: Vec3::ZERO,
+            grace: DEFAULT_GRACE,
+            scene: None,
+            gamma: GammaMode::default(),
+            method: Method::default(),
+            object_at_grasp: None,
+            record: false,
+        }
+    }
+}
+
+impl ReplayOptions {
+    /// The world these options replay into ([`scene_world`]).
+    pub fn world(&self) -> Result<InteractionWorld, WorldError> {
+        let base = InteractionConfig { gamma: self.gamma, ..InteractionConfig::default() };
+        scene_world(self.method.config(base), self.scene.as_ref(), self.record)
+    }
+}
+
+/// Replays `recording` with `options` (no soak): with an object at every
+/// closing if [`ReplayOptions::object_at_grasp`], else with the scene's
+/// objects only. Returns the summary and the world, whose session a
+/// caller that asked for one saves.
+pub fn replay_recording(
+    recording: &Recording,
+    options: &ReplayOptions,
+    observers: &mut [&mut dyn Observer],
+) -> Result<(ReplaySummary, InteractionWorld), RunError> {
+    let playback = recording.playback(options.device, options.grace)?;
+    let mut world = options.world()?;
+    let source = &recording.source_name;
+    let summary = match options.object_at_grasp {
+        Some(object) => replay_closings(source, &playback, &mut world, object, observers)?,
+        None => replay(source, &playback, &mut world, &[], observers)?,
+    };
+    Ok((summary, world))
+}
+
+/// What replaying a recorded session did; `replay --json` prints exactly
+/// this for a session file.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct SessionSummary {
+    /// The session file.
+    pub session: String,
+    /// Physics steps it recorded.
+    pub steps: usize,
+    /// What each object did, followed from the end of the first step.
+    pub objects: Vec<ObjectSummary>,
+    /// Simulated time at its end (s).
+    #[serde(skip)]
+    pub time: f64,
+}
+
+/// Whether `path` is a recorded session file (not a recording).
+pub fn is_session_file(path: &Path) -> bool {
+    std::fs::read_to_string(path).is_ok_and(|t| Session::sniff(&t))
+}
+
+/// Replays a recorded session file, bit for bit, and sums up its objects.
+pub fn replay_session_file(file: &Path) -> Result<SessionSummary, RunError> {
+    let session = Session::load(file)?;
+    // Objects are followed from the end of the first step, when all exist.
+    let mut summary: Option<Result<Summary, WorldError>> = None;
+    let replayed = session.replay(|w| {
+        let s = summary.get_or_insert_with(|| Summary::new(w));
+        if let Ok(s) = s
+            && let Err(e) = s.observe_world(w)
+        {
+            summary = Some(Err(e));
+        }
+    });
+    let world = replayed.map_err(|e| e.in_file(file))?;
+    let objects = match summary.transpose()? {
+        Some(s) => s.objects(&world)?,
+        None => Vec::new(),
+    };
+    let session_name = file.display().to_string();
+    Ok(SessionSummary {
+        session: session_name,
+        steps: session.steps(),
+        objects,
+        time: world.time(),
+    })
+}
+
+/// A replay's summary, of a recording or of a session file.
+#[derive(Debug, Clone, serde::Serialize)]
+#[serde(untagged)]
+pub enum Replayed {
+    /// A recording's.
+    Recording(ReplaySummary),
+    /// A session file's.
+    Session(SessionSummary),
+}
+
+/// `replay FILE --json`'s data without a soak, trace or recorded session:
+/// a session file replayed ([`replay_session_file`]), else a recording of
+/// any format ([`replay_recording`]).
+pub fn replay_file(path: &Path, options: &ReplayOptions) -> Result<Replayed, RunError> {
+    if is_session_file(path) {
+        return Ok(Replayed::Session(replay_session_file(path)?));
+    }
+    let recording = crate::input::recording::load(path)?;
+    Ok(Replayed::Recording(replay_recording(&recording, options, &mut [])?.0))
 }
 
 /// A world to replay into: ground at y = 0 plus the given objects.

@@ -53,7 +53,7 @@ use crate::file_error::FileError;
 use crate::hand::rig::HandRig;
 use crate::hand::{HandSample, Side};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
-use crate::pipeline::{InteractionConfig, InteractionWorld};
+use crate::pipeline::{InteractionConfig, InteractionWorld, Method};
 use crate::scene::file::SceneEntry;
 use crate::scene::{GammaMode, Scene};
 use check::{Check, CheckResult, History};
@@ -213,6 +213,13 @@ pub struct ScenarioReport {
     pub checks: Vec<CheckResult>,
 }
 
+/// `scenario --json`'s one object: the reports of the scenarios run.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ScenarioReports<'a> {
+    /// One report per scenario, in the order run.
+    pub scenarios: Vec<&'a ScenarioReport>,
+}
+
 impl Scenario {
     /// A shipped scenario by name, or else a scenario file by path.
     pub fn find(name_or_file: &str) -> Result<Scenario, ScenarioError> {
@@ -232,6 +239,12 @@ impl Scenario {
                 }
             }),
         }
+    }
+
+    /// The same scenario with its hands moving objects by `method`: its
+    /// config through [`Method::config`].
+    pub fn with_method(self, method: Method) -> Scenario {
+        Scenario { config: method.config(self.config), ..self }
     }
 
     /// Reads and checks a scenario file.

@@ -1,0 +1,293 @@
+//! The runs the CLI has, each the library function the CLI calls, its
+//! result the CLI's `--json` data as Python objects (through JSON, so a
+//! `json.dumps` of it is the CLI's text); and the recordings' loader.
+
+use crate::arrays::{points_array, pose_dict};
+use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError, UnknownMethodError};
+use crate::{bench_error, run_error};
+use coulomb_hands::eval::{AccuracyOptions, Conditions, Strategy, accuracy};
+use coulomb_hands::input::mediapipe::{self, Label};
+use coulomb_hands::input::{layouts, recording, skeleton};
+use coulomb_hands::run::bench::{self as lib_bench, BenchOptions};
+use coulomb_hands::run::replay::{GraspObject, ReplayOptions, replay_file};
+use coulomb_hands::run::scenario::{Scenario, ScenarioReports};
+use coulomb_hands::scene::Scene;
+use coulomb_hands::{GammaMode, Method};
+use glam::Vec3;
+use numpy::PyArray2;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use std::path::PathBuf;
+
+/// A method by name.
+pub fn method(name: &str) -> PyResult<Method> {
+    name.parse().map_err(|e: coulomb_hands::pipeline::method::UnknownMethod| {
+        UnknownMethodError::new_err(e.to_string())
+    })
+}
+
+/// `value` as JSON's Python objects.
+pub fn to_python<'py>(
+    py: Python<'py>,
+    value: &impl serde::Serialize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let text = serde_json::to_string(value)
+        .map_err(|e| crate::OutputError::new_err(format!("output: {e}")))?;
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+/// Replays a recording (Leap Motion, or a joint recording) or a recorded
+/// session file, headlessly: `replay FILE --json`'s data.
+#[pyfunction]
+#[pyo3(signature = (
+    path,
+    *,
+    device = None,
+    grace = None,
+    scene = None,
+    gamma = None,
+    method = "coulomb",
+    object_at_grasp = None,
+))]
+#[allow(clippy::too_many_arguments)]
+fn replay<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    device: Option<&Bound<'_, PyAny>>,
+    grace: Option<f64>,
+    scene: Option<PathBuf>,
+    gamma: Option<&Bound<'_, PyAny>>,
+    method: &str,
+    object_at_grasp: Option<&str>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let defaults = ReplayOptions::default();
+    let object_at_grasp = object_at_grasp
+        .map(|o| o.parse::<GraspObject>())
+        .transpose()
+        .map_err(|e| GraspObjectError::new_err(e.to_string()))?;
+    let gamma = match gamma {
+        None => defaults.gamma,
+        Some(g) => match g.extract::<String>() {
+            Ok(t) if t == "auto" => GammaMode::Auto,
+            Ok(t) => {
+                return Err(ArgumentError::new_err(format!(
+                    "gamma: a number or \"auto\", got {t:?}"
+                )));
+            }
+            Err(_) => GammaMode::Fixed(g.extract()?),
+        },
+    };
+    let grace = grace.unwrap_or(defaults.grace);
+    if !(grace.is_finite() && grace >= 0.0) {
+        return Err(ArgumentError::new_err(format!("grace: must be ≥ 0 s, got {grace}")));
+    }
+    let device = device.map(|d| crate::arrays::vec3(d, "device")).transpose()?;
+    let method = self::method(method)?;
+    let summary = py.detach(|| {
+        let scene = scene.as_deref().map(Scene::load).transpose()?;
+        let options = ReplayOptions {
+            device: device.unwrap_or(Vec3::ZERO),
+            grace,
+            scene,
+            gamma,
+            method,
+            object_at_grasp,
+            record: false,
+        };
+        replay_file(&path, &options)
+    });
+    to_python(py, &summary.map_err(run_error)?)
+}
+
+/// Runs a shipped scenario by name (e.g. `push`) or a scenario file:
+/// `scenario NAME --json`'s data, `{"scenarios": [report]}`.
+#[pyfunction]
+#[pyo3(signature = (name_or_path, method = "coulomb"))]
+fn run_scenario<'py>(
+    py: Python<'py>,
+    name_or_path: &str,
+    method: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let method = self::method(method)?;
+    let report = py.detach(|| {
+        let scenario = Scenario::find(name_or_path)?.with_method(method);
+        scenario.run(&mut [])
+    });
+    let report = report.map_err(run_error)?;
+    to_python(py, &ScenarioReports { scenarios: vec![&report] })
+}
+
+/// The positioning-accuracy study (thesis §5.2): `eval accuracy --json`'s
+/// data.
+#[pyfunction]
+#[pyo3(signature = (
+    *,
+    users = AccuracyOptions::USERS,
+    trials = AccuracyOptions::TRIALS,
+    seed = AccuracyOptions::SEED,
+    methods = None,
+    strategies = None,
+    noise = AccuracyOptions::NOISE,
+    perception = Conditions::PERCEPTION,
+    noise_from = None,
+    threads = None,
+))]
+#[allow(clippy::too_many_arguments)]
+fn eval_accuracy<'py>(
+    py: Python<'py>,
+    users: usize,
+    trials: usize,
+    seed: u64,
+    methods: Option<Vec<String>>,
+    strategies: Option<Vec<String>>,
+    noise: f32,
+    perception: f32,
+    noise_from: Option<Vec<PathBuf>>,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let defaults = AccuracyOptions::default();
+    let methods = match methods {
+        None => defaults.methods,
+        Some(names) => names.iter().map(|m| method(m)).collect::<PyResult<_>>()?,
+    };
+    let strategies = match strategies {
+        None => defaults.strategies,
+        Some(names) => names
+            .iter()
+            .map(|s| s.parse::<Strategy>().map_err(ArgumentError::new_err))
+            .collect::<PyResult<_>>()?,
+    };
+    let conditions = Conditions {
+        perception,
+        noise_from: noise_from.unwrap_or_default(),
+        threads: threads.unwrap_or(defaults.conditions.threads),
+    };
+    let options = AccuracyOptions { users, trials, seed, methods, strategies, noise, conditions };
+    let study = py.detach(|| accuracy(&options, &mut |_, _| {}));
+    to_python(py, &study.map_err(run_error)?)
+}
+
+/// The performance analysis of thesis §5.3: `bench --json`'s data. With
+/// `mujoco`, the Python with pip's mujoco to time MuJoCo's step by.
+#[pyfunction]
+#[pyo3(name = "bench", signature = (
+    *,
+    steps = BenchOptions::STEPS,
+    boxes = BenchOptions::MAX_BOXES,
+    tower = true,
+    mujoco = None,
+))]
+fn run_bench<'py>(
+    py: Python<'py>,
+    steps: usize,
+    boxes: usize,
+    tower: bool,
+    mujoco: Option<PathBuf>,
+) -> PyResult<Bound<'py, PyAny>> {
+    if steps == 0 || !(1..=BenchOptions::MAX_BOXES).contains(&boxes) {
+        let why = format!(
+            "steps ≥ 1 and boxes in 1..={}, got {steps} and {boxes}",
+            BenchOptions::MAX_BOXES
+        );
+        return Err(ArgumentError::new_err(why));
+    }
+    let options = BenchOptions { steps, boxes, tower, mujoco };
+    let report = py.detach(|| lib_bench::run(&options, &mut |_| {}));
+    to_python(py, &report.map_err(bench_error)?)
+}
+
+/// A recording's frames as the library loads them: a list of
+/// `{"t": s, "hands": [{"id", "side", "pose"}]}`, each pose (a dict of
+/// arrays, as `World.hand_pose` gives) in the world with the recording's
+/// origin at `device` (m).
+#[pyfunction]
+#[pyo3(signature = (path, device = None))]
+fn load_recording<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    device: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Bound<'py, PyList>> {
+    let device =
+        device.map(|d| crate::arrays::vec3(d, "device")).transpose()?.unwrap_or(Vec3::ZERO);
+    let recording =
+        py.detach(|| recording::load(&path)).map_err(|e| InputError::new_err(e.to_string()))?;
+    let conversion = recording.conversion(device);
+    let start = recording.frames.first().map_or(0, |f| f.timestamp_us);
+    let frames = PyList::empty(py);
+    for frame in &recording.frames {
+        let hands = PyList::empty(py);
+        for hand in &frame.hands {
+            let pose = skeleton::hand_pose(hand, &conversion)
+                .map_err(|e| SkeletonError::new_err(e.to_string()))?;
+            let entry = PyDict::new(py);
+            entry.set_item("id", hand.id)?;
+            entry.set_item(
+                "side",
+                if hand.side == coulomb_hands::Side::Left { "left" } else { "right" },
+            )?;
+            entry.set_item("pose", pose_dict(py, &pose)?)?;
+            hands.append(entry)?;
+        }
+        let entry = PyDict::new(py);
+        entry.set_item("t", (frame.timestamp_us - start) as f64 * 1e-6)?;
+        entry.set_item("hands", hands)?;
+        frames.append(entry)?;
+    }
+    Ok(frames)
+}
+
+/// MediaPipe's world landmarks (y down, its image axes) turned y up, as the
+/// library turns them ([`layouts::mediapipe_to_y_up`]): an (n, 3) array.
+#[pyfunction]
+fn mediapipe_to_y_up<'py>(
+    py: Python<'py>,
+    landmarks: &Bound<'_, PyAny>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let up = layouts::mediapipe_to_y_up();
+    let rows = crate::arrays::rows::<3>(landmarks, "landmarks", None)?;
+    points_array(py, rows.into_iter().map(|p| up.point(Vec3::from_array(p))))
+}
+
+/// A MediaPipe hand landmarker result (`.pbtxt`), as the library reads it:
+/// `side` (from its label: `subject`, the subject's own hand, or
+/// `mirrored`, as MediaPipe Hands and its own test data label hands),
+/// `joints` (21, 3), its world landmarks in metres turned y up, ready for
+/// `set_hand_joints(..., "mediapipe")`.
+#[pyfunction]
+#[pyo3(signature = (path, label = "subject"))]
+fn load_mediapipe<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    label: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let label = match label {
+        "subject" => Label::Subject,
+        "mirrored" => Label::Mirrored,
+        _ => {
+            return Err(ArgumentError::new_err(format!(
+                "label: \"subject\" or \"mirrored\", got {label:?}"
+            )));
+        }
+    };
+    let input = |e: coulomb_hands::input::InputError| InputError::new_err(e.to_string());
+    let landmarks = py.detach(|| mediapipe::load(&path)).map_err(input)?;
+    let hand = landmarks.tracked_hand(&path.display().to_string(), 0, label).map_err(input)?;
+    let dict = PyDict::new(py);
+    dict.set_item("side", if hand.side == coulomb_hands::Side::Left { "left" } else { "right" })?;
+    let up = layouts::mediapipe_to_y_up();
+    let world = landmarks.world_landmarks.unwrap_or_default();
+    dict.set_item("joints", points_array(py, world.iter().map(|&p| up.point(p)))?)?;
+    Ok(dict)
+}
+
+/// Adds the runs to the module.
+pub fn add(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(replay, m)?)?;
+    m.add_function(wrap_pyfunction!(run_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(eval_accuracy, m)?)?;
+    m.add_function(wrap_pyfunction!(run_bench, m)?)?;
+    m.add_function(wrap_pyfunction!(load_recording, m)?)?;
+    m.add_function(wrap_pyfunction!(load_mediapipe, m)?)?;
+    m.add_function(wrap_pyfunction!(mediapipe_to_y_up, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,112 @@
+"""The library's loaders and runs through the package: a joint recording's OpenXR
+joints pose the hand the Rust loader poses, and a replay's data serialises to the CLI's
+--json text byte for byte."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+import coulomb_hands as ch
+from conftest import REPO
+
+RECORDING = REPO / "data" / "joints" / "pinch-57fps.jsonl"
+
+
+def test_openxr_joints_of_a_recording_pose_the_hand_the_rust_loader_poses() -> None:
+    loaded = ch.load_recording(RECORDING)
+    lines = RECORDING.read_text().splitlines()[1:]
+    assert len(loaded) == len(lines) == 133
+    world = ch.World()
+    hands: dict[str, int] = {}
+    compared = 0
+    for line, frame in zip(lines, loaded):
+        tracked = json.loads(line)["hands"]
+        assert len(tracked) == len(frame["hands"])
+        for hand, expected in zip(tracked, frame["hands"]):
+            assert hand["layout"] == "openxr"
+            side = hand["side"]
+            if side not in hands:
+                hands[side] = world.add_hand(side)
+            world.set_hand_joints(
+                hands[side],
+                np.array(hand["joints"]),
+                "openxr",
+                radii=np.array(hand["radii"]),
+                orientations=np.array(hand["orientations"]),
+            )
+            pose = world.hand_pose(hands[side])
+            assert pose is not None
+            for key, value in expected["pose"].items():
+                assert np.array_equal(pose[key], value), key  # type: ignore[literal-required]
+            compared += 1
+    assert compared == 133
+    # The hand pinches: its thumb and index tips close to within 3 cm at some frame.
+    tips = [f["hands"][0]["pose"] for f in loaded if f["hands"]]
+    gaps = [np.linalg.norm(p["capsule_b"][2] - p["capsule_b"][5]) for p in tips]
+    assert min(gaps) < 0.03 < max(gaps)
+
+
+def cli() -> Path:
+    """The CLI the workspace built: $COULOMB_HANDS_BIN, or target/debug's or
+    target/release's."""
+    given = os.environ.get("COULOMB_HANDS_BIN")
+    candidates = [Path(given)] if given else []
+    candidates += [REPO / "target" / p / "coulomb-hands" for p in ("debug", "release")]
+    for path in candidates:
+        if path.is_file():
+            return path
+    pytest.fail("no coulomb-hands binary: build it with `cargo build` or set COULOMB_HANDS_BIN")
+
+
+def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
+    recording = "data/leap/pinch.json.lz"
+    args = ["--object-at-grasp", "box:0.038:0.045", "--gamma", "330", "--grace", "0.12"]
+    out = subprocess.run(
+        [str(cli()), "replay", recording, "--json", *args],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    cwd = os.getcwd()
+    os.chdir(REPO)
+    try:
+        data = ch.replay(recording, object_at_grasp="box:0.038:0.045", gamma=330.0, grace=0.12)
+    finally:
+        os.chdir(cwd)
+    assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
+    # And the run did something: the box put at the closing settled in the grip with
+    # under 2 cm of drift, then fell when the hand opened.
+    (closing,) = data["closings"]
+    assert closing["settled_at"] is not None and closing["slipped_at"] is None
+    assert closing["drift"] < 0.02 and closing["released"]
+    assert data["all_finite"]
+
+
+def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
+    args = ["--users", "1", "--trials", "2", "--seed", "17", "--method", "coulomb,thesis"]
+    args += ["--strategy", "slide", "--noise", "0.6"]
+    out = subprocess.run(
+        [str(cli()), "eval", "accuracy", "--json", *args],
+        cwd=REPO,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    data = ch.eval_accuracy(
+        users=1, trials=2, seed=17, methods=["coulomb", "thesis"], strategies=["slide"], noise=0.6
+    )
+    assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
+    assert [m["method"] for m in data["methods"]] == ["coulomb", "thesis"]
+
+
+def test_a_scenario_runs_and_passes_its_checks() -> None:
+    data = ch.run_scenario("push")
+    (report,) = data["scenarios"]
+    assert report["name"] == "push" and report["passed"]
+    assert all(c["passed"] for c in report["checks"])
