@@ -168,7 +168,8 @@ fn eval_accuracy<'py>(
 }
 
 /// The performance analysis of thesis §5.3: `bench --json`'s data. With
-/// `mujoco`, the Python with pip's mujoco to time MuJoCo's step by.
+/// `mujoco`, the Python with pip's mujoco to time MuJoCo's step by;
+/// `objects`, the cluttered scenes' object counts (the CLI's by default).
 #[pyfunction]
 #[pyo3(name = "bench", signature = (
     *,
@@ -176,6 +177,7 @@ fn eval_accuracy<'py>(
     boxes = BenchOptions::MAX_BOXES,
     tower = true,
     mujoco = None,
+    objects = lib_bench::DEFAULT_OBJECTS.to_vec(),
 ))]
 fn run_bench<'py>(
     py: Python<'py>,
@@ -183,6 +185,7 @@ fn run_bench<'py>(
     boxes: usize,
     tower: bool,
     mujoco: Option<PathBuf>,
+    objects: Vec<usize>,
 ) -> PyResult<Bound<'py, PyAny>> {
     if steps == 0 || !(1..=BenchOptions::MAX_BOXES).contains(&boxes) {
         let why = format!(
@@ -191,7 +194,12 @@ fn run_bench<'py>(
         );
         return Err(ArgumentError::new_err(why));
     }
-    let options = BenchOptions { steps, boxes, tower, mujoco };
+    let scenes = lib_bench::HELD..=lib_bench::MAX_OBJECTS;
+    if let Some(bad) = objects.iter().find(|n| !scenes.contains(n)) {
+        let why = format!("objects: each in {}..={}, got {bad}", scenes.start(), scenes.end());
+        return Err(ArgumentError::new_err(why));
+    }
+    let options = BenchOptions { steps, boxes, tower, mujoco, objects };
     let report = py.detach(|| lib_bench::run(&options, &mut |_| {}));
     to_python(py, &report.map_err(bench_error)?)
 }

@@ -110,3 +110,12 @@ def test_a_scenario_runs_and_passes_its_checks() -> None:
     (report,) = data["scenarios"]
     assert report["name"] == "push" and report["passed"]
     assert all(c["passed"] for c in report["checks"])
+
+
+def test_the_bench_times_cluttered_scenes_with_the_same_bones_pressing() -> None:
+    data = ch.bench(steps=20, boxes=3, tower=False, objects=[30, 75])
+    assert [p["objects"] for p in data["objects"]] == [30, 75]
+    assert all(p["bones_pressing"] == 32 and p["interaction_us"] > 0 for p in data["objects"])
+    assert data["reference"]["bones_pressing"] == 6
+    with pytest.raises(ch.ArgumentError, match="objects: each in 16..=4000, got 9"):
+        ch.bench(steps=20, objects=[30, 9])

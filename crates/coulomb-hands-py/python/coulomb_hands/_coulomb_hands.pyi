@@ -287,10 +287,16 @@ def eval_accuracy(
     accuracy --json`'s data."""
 
 def bench(
-    *, steps: int = 5000, boxes: int = 16, tower: bool = True, mujoco: Optional[Path] = None
+    *,
+    steps: int = 5000,
+    boxes: int = 16,
+    tower: bool = True,
+    mujoco: Optional[Path] = None,
+    objects: Sequence[int] = (70, 250, 500, 1000, 2000),
 ) -> dict[str, Any]:
     """The performance analysis (thesis 5.3); returns `coulomb-hands bench --json`'s
-    data. With `mujoco`, the Python with pip's mujoco that times MuJoCo's step."""
+    data. With `mujoco`, the Python with pip's mujoco that times MuJoCo's step;
+    `objects`, the cluttered scenes' object counts (16 to 4000 each; empty for none)."""
 
 def load_recording(path: Path, device: Optional[ArrayLike] = None) -> list[dict[str, Any]]:
     """A recording's frames as the library loads them, its origin at `device`: a list of
