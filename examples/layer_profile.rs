@@ -11,7 +11,9 @@
 //!     target/release/examples/layer_profile awake 300
 //! ```
 
-use coulomb_hands::run::bench::{WARM_UP, bench_config, held_boxes_scene, keep_awake, sweep_scene};
+use coulomb_hands::run::bench::{
+    WARM_UP, bench_config, bones_pressing, held_boxes_scene, keep_awake, sweep_scene,
+};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -27,7 +29,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for _ in 0..WARM_UP + steps {
         world.step();
     }
-    let pressing = world.contacts().iter().filter(|c| c.normal_force > 0.0).count();
-    println!("{scene}: {pressing} bones pressing after {steps} steps");
+    println!("{scene}: {} bones pressing after {steps} steps", bones_pressing(&world));
     Ok(())
 }

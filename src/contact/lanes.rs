@@ -9,10 +9,10 @@
 //! taken lane by lane in sample order ([`Vec3Lanes::sum`]), as a scalar
 //! loop would, so they too are the same bits.
 //!
-//! The padding lanes of the last chunk are zeros on entry; what the
-//! arithmetic leaves in them is never read ([`Vec3Lanes::iter`] and
-//! [`Vec3Lanes::sum`] stop at [`Vec3Lanes::len`], and [`Vec3Lanes::valid`]
-//! masks them out).
+//! What the padding lanes of the last chunk hold is unspecified (zeros in a
+//! new chunk, a buffer's earlier items in a reused one) and never read:
+//! [`Vec3Lanes::for_each`] and [`Vec3Lanes::sum`] stop at
+//! [`Vec3Lanes::len`], and [`Vec3Lanes::valid`] masks them out.
 
 use glam::{Mat3, Vec3};
 use wide::f32x4;
@@ -24,7 +24,7 @@ pub(crate) const LANES: usize = 4;
 pub(crate) type Chunk = [f32x4; 3];
 
 /// A sequence of vectors (units those of its items), in chunks of four.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default)]
 pub(crate) struct Vec3Lanes {
     chunks: Vec<Chunk>,
     len: usize,
@@ -74,9 +74,7 @@ impl Vec3Lanes {
     /// Item `i` (< [`Self::len`]).
     #[inline]
     pub fn get(&self, i: usize) -> Vec3 {
-        let [x, y, z] = &self.chunks[i / LANES];
-        let k = i % LANES;
-        Vec3::new(x.as_array()[k], y.as_array()[k], z.as_array()[k])
+        lane(&self.chunks[i / LANES], i % LANES)
     }
 
     /// Sets item `i` (< [`Self::len`]).
@@ -88,6 +86,12 @@ impl Vec3Lanes {
     /// The items, in order.
     pub fn iter(&self) -> impl ExactSizeIterator<Item = Vec3> + '_ {
         (0..self.len).map(|i| self.get(i))
+    }
+
+    /// Calls `f` with each item, in order ([`Self::for_each_with`]).
+    #[inline]
+    pub fn for_each(&self, mut f: impl FnMut(Vec3)) {
+        self.for_each_with(self, |v, _| f(v));
     }
 
     /// Calls `f` with each item and the item at the same place in `other`
@@ -120,7 +124,7 @@ impl Vec3Lanes {
     /// The sum of the items, added in order from zero, as glam's `Sum`.
     pub fn sum(&self) -> Vec3 {
         let mut sum = Vec3::ZERO;
-        self.for_each_with(self, |v, _| sum += v);
+        self.for_each(|v| sum += v);
         sum
     }
 

@@ -288,7 +288,7 @@ impl PatchScratch {
 /// beyond it slips by the slip rule, which is how a patch slips in
 /// torsion). No sample pulls ([`push_only`]). Writes the samples' world
 /// points to `points` and leaves `(force on the object, point)` per
-/// sample in `scratch` ([`PatchScratch::applied`]).
+/// sample in `scratch` ([`PatchScratch::for_each_applied`]).
 ///
 /// Four samples at a time ([`super::lanes`]): the same arithmetic, in the
 /// same order, as one sample at a time, so the same bits.
@@ -317,7 +317,7 @@ pub(crate) fn spread(
         scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);
     }
     points.clear();
-    scratch.points.for_each_with(&scratch.points, |p, _| points.push(p));
+    scratch.points.for_each(|p| points.push(p));
     lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);
     lane_push_only(&mut scratch.forces, step.normal);
 }

@@ -76,17 +76,8 @@ impl InteractionWorld {
         for (i, &Kept { proximity, motion }) in kept.iter().enumerate() {
             let contact = &mut contacts[i];
             // The poses have not changed since `keep_contacts` found it.
-            let alive = match step.presses[i] {
-                Some(press) => {
-                    let touch = Touch { press, proximity, motion, index: i };
-                    self.update_contact(contact, &touch, false, &mut step)
-                }
-                None => {
-                    self.push_event(ContactEventKind::Ended, contact);
-                    false
-                }
-            };
-            if alive {
+            let touch = Touch { press: step.presses[i], proximity, motion, index: i };
+            if self.update_contact(contact, &touch, false, &mut step) {
                 self.apply_forces(contact.object, &step.patch);
                 contacts.swap(live, i);
                 live += 1;
@@ -96,8 +87,7 @@ impl InteractionWorld {
         let mut found = std::mem::take(&mut step.found);
         for (j, Candidate { mut contact, proximity, motion }) in found.drain(..).enumerate() {
             let index = kept.len() + j;
-            let Some(press) = step.presses[index] else { continue };
-            let touch = Touch { press, proximity, motion, index };
+            let touch = Touch { press: step.presses[index], proximity, motion, index };
             if self.update_contact(&mut contact, &touch, true, &mut step) {
                 self.apply_forces(contact.object, &step.patch);
                 contacts.push(contact);
@@ -223,9 +213,9 @@ pub(crate) struct StepScratch {
     /// The contact law's settings, from the world's config.
     pub(super) settings: LawSettings,
     /// Per contact (the kept ones in order, then the new ones): how it
-    /// presses this step (`None` for a kept contact whose hand is gone),
-    /// whose virtual fingers it belongs to, and its share of their γ.
-    pub(super) presses: Vec<Option<Press>>,
+    /// presses this step, whose virtual fingers it belongs to, and its
+    /// share of their γ.
+    pub(super) presses: Vec<Press>,
     pub(super) sides: Vec<share::SideKey>,
     pub(super) shares: Vec<f32>,
     /// The pressing contacts' indices, grouped by side key.

@@ -28,7 +28,7 @@ impl InteractionWorld {
                 Some(v) if v.id == contact.object => v,
                 _ => *view.insert(self.object_view(o, StabilityScale::NONE)),
             };
-            Some(contact.press(&object, motion, &settings))
+            contact.press(&object, motion, &settings)
         };
         // Kept contacts' hands are tracked: `keep_contacts` ended the others.
         for (contact, kept) in self.contacts.iter().zip(&step.kept) {
@@ -57,14 +57,9 @@ fn side_key(c: &Contact) -> SideKey {
 /// Each pressing contact's factor on γ: `shares[i]` for
 /// the contact of key `keys[i]` and press `presses[i]`. Contacts are
 /// grouped by key through `order`, a buffer kept between steps.
-fn share_by_side(
-    keys: &[SideKey],
-    presses: &[Option<Press>],
-    order: &mut Vec<usize>,
-    shares: &mut [f32],
-) {
+fn share_by_side(keys: &[SideKey], presses: &[Press], order: &mut Vec<usize>, shares: &mut [f32]) {
     let key = |i: usize| keys[i];
-    let pressing = |i: usize| presses[i].filter(|p| p.seen > 0.0);
+    let pressing = |i: usize| Some(presses[i]).filter(|p| p.seen > 0.0);
     order.clear();
     order.extend((0..keys.len()).filter(|&i| pressing(i).is_some()));
     // Stable, so equal keys keep the contacts' own order: the same sums in
