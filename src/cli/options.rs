@@ -47,9 +47,9 @@ pub struct TraceOutput {
 }
 
 impl TraceOutput {
-    /// The trace's writer, its file created, if `--trace` asks for one.
+    /// The trace's writer, its folder checked, if `--trace` asks for one.
     pub fn writer(&self) -> Result<Option<TraceWriter<TraceFile>>, RunError> {
-        let file = self.trace.as_deref().map(TraceFile::create).transpose()?;
+        let file = self.trace.as_deref().map(TraceFile::at).transpose()?;
         Ok(file.map(TraceWriter::new))
     }
 }

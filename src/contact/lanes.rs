@@ -88,22 +88,14 @@ impl Vec3Lanes {
         (0..self.len).map(|i| self.get(i))
     }
 
-    /// Calls `f` with each item, in order ([`Self::for_each_with`]).
-    #[inline]
-    pub fn for_each(&self, mut f: impl FnMut(Vec3)) {
-        self.for_each_with(self, |v, _| f(v));
-    }
-
-    /// Calls `f` with each item and the item at the same place in `other`
-    /// (as long as `self`), in order: a loop over whole chunks, much
+    /// Calls `f` with each item, in order: a loop over whole chunks, much
     /// cheaper than [`Self::iter`] on a hot path.
     #[inline]
-    pub fn for_each_with(&self, other: &Vec3Lanes, mut f: impl FnMut(Vec3, Vec3)) {
+    pub fn for_each(&self, mut f: impl FnMut(Vec3)) {
         let mut left = self.len;
-        for (a, b) in self.chunks.iter().zip(&other.chunks) {
-            let (a, b) = (a.map(f32x4::to_array), b.map(f32x4::to_array));
+        for chunk in &self.chunks {
             for k in 0..left.min(LANES) {
-                f(Vec3::new(a[0][k], a[1][k], a[2][k]), Vec3::new(b[0][k], b[1][k], b[2][k]));
+                f(lane(chunk, k));
             }
             left = left.saturating_sub(LANES);
         }
@@ -131,9 +123,11 @@ impl Vec3Lanes {
     /// Which lanes of chunk `j` hold items: a mask of all ones for those.
     #[inline]
     pub fn valid(&self, j: usize) -> f32x4 {
-        let used = self.len.saturating_sub(j * LANES);
-        let lane = |k: usize| if k < used { f32::from_bits(u32::MAX) } else { 0.0 };
-        f32x4::new([lane(0), lane(1), lane(2), lane(3)])
+        const ON: f32 = f32::from_bits(u32::MAX);
+        /// The mask of `used` lanes, by `used`.
+        const MASKS: [[f32; LANES]; LANES + 1] =
+            [[0.0; LANES], [ON, 0.0, 0.0, 0.0], [ON, ON, 0.0, 0.0], [ON, ON, ON, 0.0], [ON; LANES]];
+        f32x4::new(MASKS[self.len.saturating_sub(j * LANES).min(LANES)])
     }
 }
 

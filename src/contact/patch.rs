@@ -274,11 +274,21 @@ impl PatchScratch {
         self.points.clear();
     }
 
-    /// Calls `f` with the last spread contact's force on the object (N)
-    /// and its point (world, m), per sample, in sample order.
+    /// Calls `f` with the last spread contact's force on the object (N),
+    /// its point (world, m) and its torque about `origin`
+    /// (`(point − origin) × force`, N·m), per sample, in sample order. The
+    /// torques are taken four at a time, with `glam`'s bits.
     #[inline]
-    pub fn for_each_applied(&self, f: impl FnMut(Vec3, Vec3)) {
-        self.forces.for_each_with(&self.points, f);
+    pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(Vec3, Vec3, Vec3)) {
+        let origin = lanes::splat(origin);
+        let mut left = self.forces.len();
+        for (force, point) in self.forces.chunks().iter().zip(self.points.chunks()) {
+            let torque = lanes::cross(lanes::sub(*point, origin), *force);
+            for k in 0..left.min(LANES) {
+                f(lanes::lane(force, k), lanes::lane(point, k), lanes::lane(&torque, k));
+            }
+            left = left.saturating_sub(LANES);
+        }
     }
 }
 
@@ -317,7 +327,7 @@ pub(crate) fn spread(
         scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);
     }
     points.clear();
-    scratch.points.for_each(|p| points.push(p));
+    points.extend(scratch.points.iter());
     lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);
     lane_push_only(&mut scratch.forces, step.normal);
 }

@@ -97,31 +97,51 @@ impl TraceLine {
 }
 
 /// A trace file: buffered, and every error writing it names the file.
+///
+/// The file is created (or truncated) at its first line, or when flushed:
+/// a run that fails before its first step leaves no file behind, and an
+/// earlier trace at the same path as it was. A run that fails later keeps
+/// the steps it traced.
 pub struct TraceFile {
-    path: String,
-    out: std::io::BufWriter<std::fs::File>,
+    path: std::path::PathBuf,
+    out: Option<std::io::BufWriter<std::fs::File>>,
 }
 
 impl TraceFile {
-    /// Creates (or truncates) the file at `path`.
-    pub fn create(path: &std::path::Path) -> std::io::Result<TraceFile> {
-        let path = path.display().to_string();
-        let file = std::fs::File::create(&path).map_err(|e| named(&path, e))?;
-        Ok(TraceFile { path, out: std::io::BufWriter::new(file) })
+    /// A trace to be written at `path`. Its folder is checked now, so a
+    /// path that cannot be written is named before a run starts.
+    pub fn at(path: &std::path::Path) -> std::io::Result<TraceFile> {
+        let folder = path.parent().filter(|f| !f.as_os_str().is_empty());
+        std::fs::metadata(folder.unwrap_or(std::path::Path::new(".")))
+            .map_err(|e| named(path, e))?;
+        Ok(TraceFile { path: path.to_path_buf(), out: None })
+    }
+
+    /// The file, created at the first call.
+    fn file(&mut self) -> std::io::Result<&mut std::io::BufWriter<std::fs::File>> {
+        let out = match self.out.take() {
+            Some(out) => out,
+            None => std::io::BufWriter::new(
+                std::fs::File::create(&self.path).map_err(|e| named(&self.path, e))?,
+            ),
+        };
+        Ok(self.out.insert(out))
     }
 }
 
 /// `e` with the file's path in front of its message.
-fn named(path: &str, e: std::io::Error) -> std::io::Error {
-    std::io::Error::new(e.kind(), format!("{path}: {e}"))
+fn named(path: &std::path::Path, e: std::io::Error) -> std::io::Error {
+    std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
 }
 
 impl Write for TraceFile {
     fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        self.out.write(buf).map_err(|e| named(&self.path, e))
+        let written = self.file()?.write(buf);
+        written.map_err(|e| named(&self.path, e))
     }
 
     fn flush(&mut self) -> std::io::Result<()> {
-        self.out.flush().map_err(|e| named(&self.path, e))
+        let flushed = self.file()?.flush();
+        flushed.map_err(|e| named(&self.path, e))
     }
 }

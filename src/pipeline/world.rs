@@ -104,6 +104,9 @@ pub struct InteractionWorld {
     pub(super) forced: Vec<u32>,
     /// Objects whose contacts end at the next step ([`ObjectSlot::reseat`]).
     pub(super) reseating: Vec<u32>,
+    /// Objects a grab baseline held after the last step, ascending: with
+    /// the touched ones, all that stage 7 (`step/grab.rs`) visits.
+    pub(super) grabbed: Vec<u32>,
     /// Whether a program may have written to rapier ([`Self::physics_mut`])
     /// since the last step began: then every body's forces are cleared.
     pub(super) external: bool,
@@ -129,6 +132,7 @@ impl InteractionWorld {
             unindexed: Vec::new(),
             forced: Vec::new(),
             reseating: Vec::new(),
+            grabbed: Vec::new(),
             external: false,
             recorder: None,
         })

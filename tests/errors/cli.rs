@@ -103,6 +103,30 @@ fn outputs_that_cannot_be_written_are_named() {
     names(e, &[&dir.text("meshes"), "exists"]);
 }
 
+#[test]
+fn a_run_that_fails_before_its_first_step_leaves_its_trace_path_as_it_was() {
+    let dir = Scratch::new("cli-trace-kept");
+    let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
+    let one = one.display().to_string();
+    let earlier = "{\"t\":0.25}\n";
+    let kept = dir.file("kept.jsonl", earlier);
+    let unborn = dir.path("unborn.jsonl");
+    for trace in [&kept, &unborn] {
+        // The object cannot exist, so the replay fails before its first step.
+        let trace = trace.display().to_string();
+        let e =
+            cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", "--trace", &trace, &one]);
+        names(e, &["object 'closing-1': shape.half_extents"]);
+    }
+    assert_eq!(std::fs::read_to_string(&kept).unwrap(), earlier);
+    assert!(!unborn.exists(), "a failed run left {}", unborn.display());
+    // The same replay that runs writes its trace: a line per step.
+    let (code, _, stderr) = run(&["replay", "--trace", &unborn.display().to_string(), &one]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let lines = std::fs::read_to_string(&unborn).unwrap().lines().count();
+    assert!(lines > 0, "no trace lines");
+}
+
 #[cfg(target_os = "linux")]
 #[test]
 fn a_full_disk_while_tracing_names_the_trace_file() {

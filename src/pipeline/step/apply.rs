@@ -28,14 +28,14 @@ impl InteractionWorld {
         let com = body.center_of_mass();
         let (mut force, mut torque) = (body.user_force(), body.user_torque());
         let (mut total, mut pushed) = (slot.hand_force, false);
-        patch.for_each_applied(|f, at| {
+        patch.for_each_applied(com, |f, at, about_com| {
             if !firewall::force(f, at) {
                 return;
             }
             total = friction::total_force(total, [f]);
             if dynamic && f != Vec3::ZERO {
                 force += f;
-                torque += (at - com).cross(f);
+                torque += about_com;
                 pushed = true;
             }
         });

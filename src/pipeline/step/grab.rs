@@ -41,15 +41,31 @@ fn palm_frame(pose: &HandPose) -> Pose {
 
 impl InteractionWorld {
     /// Grabs, moves and lets go of objects by the configured baseline.
+    /// Only an object a hand touches or holds can change, so only those
+    /// are visited, in ascending order: the stage does not grow with the
+    /// scene.
     pub(super) fn grab_objects(&mut self) {
         let Some(method) = self.config.grab else { return };
-        for o in 0..self.objects.len() {
+        let mut visits = std::mem::take(&mut self.scratch.grab_visits);
+        visits.clear();
+        visits.extend(self.contacts.iter().map(|c| c.object.0));
+        visits.extend_from_slice(&self.grabbed);
+        visits.sort_unstable();
+        visits.dedup();
+        self.grabbed.clear();
+        for &o in &visits {
+            let o = o as usize;
             let held = self.objects[o].grab.held.take();
-            self.objects[o].grab.held = match held {
+            let held = match held {
                 Some(held) => self.keep_or_release(o, method, held),
                 None => self.try_grab(o, method),
             };
+            if held.is_some() {
+                self.grabbed.push(o as u32);
+            }
+            self.objects[o].grab.held = held;
         }
+        self.scratch.grab_visits = visits;
     }
 
     /// One hand's contacts on object `o`, and that hand's pose.

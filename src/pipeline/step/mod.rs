@@ -79,7 +79,10 @@ impl InteractionWorld {
             let touch = Touch { press: step.presses[i], proximity, motion, index: i };
             if self.update_contact(contact, &touch, false, &mut step) {
                 self.apply_forces(contact.object, &step.patch);
-                contacts.swap(live, i);
+                // A swap in place would still copy the contact three times.
+                if live != i {
+                    contacts.swap(live, i);
+                }
                 live += 1;
             }
         }
@@ -220,6 +223,8 @@ pub(crate) struct StepScratch {
     pub(super) shares: Vec<f32>,
     /// The pressing contacts' indices, grouped by side key.
     pub(super) order: Vec<usize>,
+    /// The objects stage 7 visits: touched or held, ascending.
+    pub(super) grab_visits: Vec<u32>,
 }
 
 impl StepScratch {
