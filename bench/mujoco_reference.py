@@ -15,7 +15,12 @@ The bench's coordinates are y-up; MuJoCo's are z-up: (x, y, z) becomes
 (x, -z, y), a rotation, so the scene is the same.
 
 Prints one JSON object: {"step_us", "settings", "steps", "mujoco",
-"boxes_held", "boxes"}. `--cone` and `--integrator` choose other settings
+"boxes_held", "boxes"}. With `--serve` it times on request instead, so
+that the bench can alternate blocks of its own steps with blocks of
+MuJoCo's, both seeing the machine as it is at that moment: after the
+warm-up it prints {"settings", "mujoco"}, then answers each line n on
+standard input with {"step_us"}, µs per step over n steps, until the end
+of its input. `--cone` and `--integrator` choose other settings
 than the default, the fastest here (pyramidal cones, Euler); `--compare`
 times every cone x integrator pair instead and prints a table. Run by `coulomb-hands bench --mujoco`; made
 ready by `bench/mujoco.sh`. Exits 3, with a message on stderr, when the
@@ -127,6 +132,20 @@ def time_steps(mujoco, model, data, warmup, steps):
     return statistics.median(per_block)
 
 
+def serve(mujoco, model, data, warmup, settings):
+    """Times blocks of steps on request (`--serve`)."""
+    for _ in range(warmup):
+        mujoco.mj_step(model, data)
+    print(json.dumps({"settings": settings, "mujoco": mujoco.__version__}), flush=True)
+    for line in sys.stdin:
+        n = max(int(line), 1)
+        t0 = time.perf_counter()
+        for _ in range(n):
+            mujoco.mj_step(model, data)
+        step_us = (time.perf_counter() - t0) / n * 1e6
+        print(json.dumps({"step_us": step_us}), flush=True)
+
+
 def held(model, data, boxes):
     """Boxes within 1 cm of where they started."""
     count = 0
@@ -145,6 +164,7 @@ def main():
     parser.add_argument("--no-tower", action="store_true")
     parser.add_argument("--check", action="store_true", help="print the version and exit")
     parser.add_argument("--compare", action="store_true", help="time every cone x integrator")
+    parser.add_argument("--serve", action="store_true", help="time blocks asked for on stdin")
     parser.add_argument("--xml", action="store_true", help="print the MJCF and exit")
     parser.add_argument("--cone", default="pyramidal", choices=("pyramidal", "elliptic"))
     parser.add_argument("--integrator", default="Euler", choices=("Euler", "implicitfast"))
@@ -164,6 +184,14 @@ def main():
     if args.check:
         print(json.dumps({"mujoco": mujoco.__version__}))
         return
+    settings = SETTINGS
+    if (args.cone, args.integrator) != ("pyramidal", "Euler"):
+        settings = f"{args.cone} cone, {args.integrator} integrator, dt 1 ms"
+    if args.serve:
+        xml = mjcf(args.boxes, not args.no_tower, args.cone, args.integrator)
+        model = mujoco.MjModel.from_xml_string(xml)
+        serve(mujoco, model, mujoco.MjData(model), args.warmup, settings)
+        return
     pairs = [(args.cone, args.integrator)]
     if args.compare:
         pairs = [(c, i) for c in ("pyramidal", "elliptic") for i in ("Euler", "implicitfast")]
@@ -177,10 +205,7 @@ def main():
         for cone, integrator, step_us, kept in results:
             print(f"{cone:9} {integrator:12} {step_us:8.1f} µs/step, {kept}/{args.boxes} boxes held")
         return
-    cone, integrator, step_us, kept = results[0]
-    settings = SETTINGS
-    if (cone, integrator) != ("pyramidal", "Euler"):
-        settings = f"{cone} cone, {integrator} integrator, dt 1 ms"
+    _, _, step_us, kept = results[0]
     print(
         json.dumps(
             {

@@ -34,6 +34,64 @@ fn a_python_without_mujoco_says_what_to_install() {
     names(e, &[&format!("{} cannot import mujoco", dir.text("python")), "bench/mujoco.sh"]);
 }
 
+/// A stand-in for the Python that runs `bench/mujoco_reference.py`: an
+/// executable file that answers the version check, then, asked to serve,
+/// says it is ready and runs `serve`, shell code that answers the blocks.
+#[cfg(unix)]
+fn stand_in_python(dir: &Scratch, serve: &str) -> String {
+    use std::os::unix::fs::PermissionsExt;
+    let script = format!(
+        "#!/bin/sh\n# Called as: python -c SCRIPT ARGS...\n\
+         if [ \"$3\" = --check ]; then echo '{{\"mujoco\": \"stand-in\"}}'; exit 0; fi\n\
+         echo '{{\"settings\": \"stand-in settings\"}}'\n{serve}\n"
+    );
+    let python = dir.file("python", script);
+    std::fs::set_permissions(&python, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+    python.display().to_string()
+}
+
+#[cfg(unix)]
+#[test]
+fn mujoco_times_a_block_as_long_after_each_block_of_ours() {
+    let dir = Scratch::new("bench-rival");
+    // 7 µs per step per step asked for: a block's answer says how long it was.
+    let log = dir.text("blocks.log");
+    let serve = format!(
+        "while read n; do echo $n >> {log}; echo \"{{\\\"step_us\\\": $((n * 7))}}\"; done"
+    );
+    let python = stand_in_python(&dir, &serve);
+    let args = ["bench", "--mujoco", "--python", &python, "--steps", "130", "--no-objects"];
+    let (code, stdout, stderr) = run(&[&args[..], &["--json"]].concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    // Asleep, then awake: 100 and 30 steps each, each after a block of ours.
+    let blocks = std::fs::read_to_string(&log).expect("the stand-in's log");
+    assert_eq!(blocks.split_whitespace().collect::<Vec<_>>(), ["100", "30", "100", "30"]);
+    let report: BenchReport = serde_json::from_str(&stdout).expect("a BenchReport");
+    let mujoco = report.mujoco.expect("MuJoCo's step");
+    assert_eq!(mujoco.settings, "stand-in settings");
+    // The median of 700, 210, 700 and 210 µs per step.
+    assert_eq!(mujoco.step_us, 455.0);
+    for ratio in [mujoco.ratio_awake, mujoco.ratio_asleep] {
+        assert!(ratio.is_finite() && ratio > 0.0, "{ratio}");
+    }
+    // The text names the same figures.
+    let (code, text, stderr) = run(&args);
+    assert_eq!(code, Some(0), "{stderr}");
+    names(&text, &["mujoco (stand-in settings): 455.0 µs per mj_step", "ours / mujoco: awake "]);
+}
+
+#[cfg(unix)]
+#[test]
+fn a_mujoco_that_stops_answering_is_named() {
+    let dir = Scratch::new("bench-rival-ends");
+    let python = stand_in_python(&dir, "read n; echo 'RuntimeError: boom' >&2; exit 1");
+    let e = cli_error(&["bench", "--mujoco", "--python", &python, "--steps", "10"]);
+    let expected = format!(
+        "{python} bench/mujoco_reference.py failed: it ended (exit status: 1): RuntimeError: boom"
+    );
+    assert_eq!(e, expected);
+}
+
 #[test]
 fn bench_json_has_the_reports_shape() {
     let (code, stdout, stderr) = run(&["bench", "--steps", "20", "--objects", "25,60", "--json"]);

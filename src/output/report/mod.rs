@@ -234,16 +234,19 @@ pub struct ReferenceScene {
     pub settling_us: f64,
 }
 
-/// MuJoCo's step on the reference scene, beside ours.
+/// MuJoCo's step on the reference scene, beside ours: each block of our
+/// steps was followed by a block as long of MuJoCo's, so that both saw the
+/// machine alike.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct MujocoStep {
-    /// µs per `mj_step`.
+    /// µs per `mj_step`: the median over its blocks.
     pub step_us: f64,
     /// MuJoCo's settings (`run::bench::mujoco::SETTINGS`).
     pub settings: String,
-    /// Our awake full step over MuJoCo's step.
+    /// Our awake full step over MuJoCo's step: the median over pairs of
+    /// blocks of ours over the MuJoCo block after it.
     pub ratio_awake: f64,
-    /// Our asleep full step over MuJoCo's step.
+    /// The same, asleep.
     pub ratio_asleep: f64,
 }
 

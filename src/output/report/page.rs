@@ -412,8 +412,8 @@ fn performance(p: &mut String, b: &BenchReport) {
         Some(m) => {
             let _ = writeln!(
                 p,
-                "<p>MuJoCo's settings: {}. Our full step over MuJoCo's step: awake {}, \
-                 asleep {}.</p>",
+                "<p>MuJoCo's settings: {}. Our full step over MuJoCo's step (the median over \
+                 pairs of 100-step blocks, ours then MuJoCo's): awake {}, asleep {}.</p>",
                 escape(&m.settings),
                 num(m.ratio_awake, 3),
                 num(m.ratio_asleep, 3)

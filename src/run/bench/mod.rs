@@ -139,23 +139,11 @@ pub fn run(
         let times = time_split(&mut world, options.steps, progress)?;
         sweep.push(SweepPoint { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
     }
-    let reference = reference(options, progress)?;
+    let (reference, mujoco) = reference(options, progress)?;
     let mut objects = Vec::with_capacity(options.objects.len());
     for &n in &options.objects {
         objects.push(cluttered(n, options.steps, progress)?);
     }
-    let mujoco = match &options.mujoco {
-        Some(python) => {
-            let run = mujoco::run(python, options.steps, options.boxes, options.tower)?;
-            Some(MujocoStep {
-                step_us: run.step_us,
-                settings: run.settings,
-                ratio_awake: reference.awake.full_us / run.step_us,
-                ratio_asleep: reference.asleep.full_us / run.step_us,
-            })
-        }
-        None => None,
-    };
     Ok(BenchReport { sweep, reference, mujoco, objects })
 }
 
@@ -187,23 +175,59 @@ pub fn objects_growth(points: &[ObjectsPoint]) -> Option<(f64, usize, usize)> {
     })
 }
 
-/// The reference scene asleep (after its timed first second) and awake.
+/// The reference scene asleep (after its timed first second) and awake;
+/// with `--mujoco`, MuJoCo's step on the same scene, a block of its steps
+/// after each block of ours ([`mujoco::Rival`]).
 fn reference(
     options: &BenchOptions,
     progress: &mut dyn FnMut(u64),
-) -> Result<ReferenceScene, BenchError> {
+) -> Result<(ReferenceScene, Option<MujocoStep>), BenchError> {
+    let mut rival = match &options.mujoco {
+        Some(python) => Some(mujoco::Rival::start(python, options.boxes, options.tower)?),
+        None => None,
+    };
+    let (mut asleep_pairs, mut awake_pairs) = (Vec::new(), Vec::new());
     let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
     let start = Instant::now();
     steps(&mut world, ONE_SECOND, progress)?;
     let settling_us = start.elapsed().as_secs_f64() * 1e6 / ONE_SECOND as f64;
-    let asleep = time_split(&mut world, options.steps, progress)?;
+    let asleep = time_against(&mut world, options.steps, progress, &mut rival, &mut asleep_pairs)?;
     let (bones_pressing, objects) = (bones_pressing(&world), world.object_count());
     drop(world);
     let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
     keep_awake(&mut world);
     steps(&mut world, WARM_UP, progress)?;
-    let awake = time_split(&mut world, options.steps, progress)?;
-    Ok(ReferenceScene { bones_pressing, objects, asleep, awake, settling_us })
+    let awake = time_against(&mut world, options.steps, progress, &mut rival, &mut awake_pairs)?;
+    let scene = ReferenceScene { bones_pressing, objects, asleep, awake, settling_us };
+    let mujoco = rival.map(|rival| {
+        let theirs = asleep_pairs.iter().chain(&awake_pairs).map(|p| p[1]).collect();
+        let ratio = |pairs: &[[f64; 2]]| median(pairs.iter().map(|p| p[0] / p[1]).collect());
+        MujocoStep {
+            step_us: median(theirs),
+            settings: rival.settings.clone(),
+            ratio_awake: ratio(&awake_pairs),
+            ratio_asleep: ratio(&asleep_pairs),
+        }
+    });
+    Ok((scene, mujoco))
+}
+
+/// [`time_split`], and after each of its blocks, when there is a `rival`,
+/// as many of MuJoCo's steps: per pair of blocks, our full step and
+/// MuJoCo's (µs), pushed to `pairs`.
+fn time_against(
+    world: &mut InteractionWorld,
+    steps: usize,
+    progress: &mut dyn FnMut(u64),
+    rival: &mut Option<mujoco::Rival>,
+    pairs: &mut Vec<[f64; 2]>,
+) -> Result<StepTimes, BenchError> {
+    time_blocks(world, steps, progress, &mut |n, ours| {
+        if let Some(rival) = rival.as_mut() {
+            pairs.push([ours[2], rival.time(n)?]);
+        }
+        Ok(())
+    })
 }
 
 /// Steps `world` `n` times through the driver loop, untimed.
@@ -240,6 +264,20 @@ pub fn time_split(
     steps: usize,
     progress: &mut dyn FnMut(u64),
 ) -> Result<StepTimes, BenchError> {
+    time_blocks(world, steps, progress, &mut |_, _| Ok(()))
+}
+
+/// What [`time_blocks`] calls after each block: with its length and its
+/// µs per step, `[interaction layer, rapier, full]`.
+type AfterBlock<'a> = &'a mut dyn FnMut(usize, &[f64; 3]) -> Result<(), BenchError>;
+
+/// [`time_split`], calling `after_block` after each block.
+fn time_blocks(
+    world: &mut InteractionWorld,
+    steps: usize,
+    progress: &mut dyn FnMut(u64),
+    after_block: AfterBlock,
+) -> Result<StepTimes, BenchError> {
     let steps = steps.max(1);
     let mut blocks = Vec::with_capacity(steps.div_ceil(BLOCK));
     let mut driver = Driver::new(world);
@@ -250,7 +288,9 @@ pub fn time_split(
         driver.run(n, &mut [&mut watch])?;
         let per_step = |ns: u128| ns as f64 / n as f64 / 1e3;
         let (hands, rapier) = (watch.hands_ns, watch.rapier_ns);
-        blocks.push([per_step(hands), per_step(rapier), per_step(hands + rapier)]);
+        let block = [per_step(hands), per_step(rapier), per_step(hands + rapier)];
+        after_block(n, &block)?;
+        blocks.push(block);
         done += n;
         progress(n as u64);
     }

@@ -1,11 +1,14 @@
 //! MuJoCo's side of the bench: `bench/mujoco_reference.py`, built into the
 //! binary, run by a Python that has pip's `mujoco` (`bench/mujoco.sh` makes
 //! a virtualenv with it under `target/`). It builds the reference scene in
-//! MJCF (mocap capsule bones, dt 1 ms, [`SETTINGS`]) and prints one JSON
-//! object with µs per `mj_step`.
+//! MJCF (mocap capsule bones, dt 1 ms, [`SETTINGS`]) and, kept running
+//! ([`Rival`]), times blocks of `mj_step`s on request, so that the bench
+//! alternates them with its own: on a machine whose speed drifts, each of
+//! our blocks is compared with the MuJoCo block run right after it.
 
+use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
 
 /// The script, as committed in `bench/`.
 pub const SCRIPT: &str = include_str!("../../../bench/mujoco_reference.py");
@@ -48,23 +51,6 @@ pub enum MujocoError {
     },
 }
 
-/// The script's answer.
-#[derive(Debug, Clone, PartialEq, serde::Deserialize)]
-pub struct MujocoRun {
-    /// µs per `mj_step` (median of 100-step blocks).
-    pub step_us: f64,
-    /// Its settings ([`SETTINGS`]).
-    pub settings: String,
-    /// Steps timed.
-    pub steps: usize,
-    /// MuJoCo's version.
-    pub mujoco: String,
-    /// Held boxes still within 1 cm of where they began.
-    pub boxes_held: usize,
-    /// Held boxes in the scene.
-    pub boxes: usize,
-}
-
 /// The Python `--mujoco` uses when none is given: `bench/mujoco.sh`'s
 /// virtualenv if it is there (relative to the working directory), else
 /// the system's.
@@ -83,24 +69,103 @@ pub fn check(python: &Path) -> Result<String, MujocoError> {
     parse::<Version>(python, &out).map(|v| v.mujoco)
 }
 
-/// Times `steps` `mj_step`s (after a 200-step warm-up) of the reference
-/// scene with `boxes` held boxes, with or without its tower.
-pub fn run(
-    python: &Path,
-    steps: usize,
-    boxes: usize,
-    tower: bool,
-) -> Result<MujocoRun, MujocoError> {
-    let mut args = vec!["--steps".into(), steps.to_string(), "--boxes".into(), boxes.to_string()];
-    if !tower {
-        args.push("--no-tower".into());
+/// MuJoCo stepping the reference scene in a Python kept running
+/// (`--serve`), timing blocks of steps when asked. Between blocks it waits,
+/// so it takes no time from ours. Ended (killed) when dropped.
+pub struct Rival {
+    python: String,
+    child: Child,
+    input: ChildStdin,
+    output: BufReader<ChildStdout>,
+    /// MuJoCo's settings ([`SETTINGS`]).
+    pub settings: String,
+}
+
+/// The script's first line in `--serve` mode, after its warm-up.
+#[derive(serde::Deserialize)]
+struct Ready {
+    settings: String,
+}
+
+/// The script's answer to a block.
+#[derive(serde::Deserialize)]
+struct Block {
+    step_us: f64,
+}
+
+impl Rival {
+    /// Starts the script on the reference scene with `boxes` held boxes,
+    /// with or without its tower, and waits for its 200-step warm-up.
+    pub fn start(python: &Path, boxes: usize, tower: bool) -> Result<Rival, MujocoError> {
+        let name = python.display().to_string();
+        let mut command = Command::new(python);
+        command.arg("-c").arg(SCRIPT).args(["--serve", "--boxes", &boxes.to_string()]);
+        if !tower {
+            command.arg("--no-tower");
+        }
+        let mut child = command
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| MujocoError::NoPython { python: name.clone(), message: e.to_string() })?;
+        let (Some(input), Some(output)) = (child.stdin.take(), child.stdout.take()) else {
+            let message = "its standard input and output are not pipes".to_string();
+            return Err(MujocoError::Script { python: name, message });
+        };
+        let output = BufReader::new(output);
+        let mut rival = Rival { python: name, child, input, output, settings: String::new() };
+        rival.settings = rival.answer::<Ready>()?.settings;
+        Ok(rival)
     }
-    let run: MujocoRun = parse(python, &script(python, &args)?)?;
-    if !(run.step_us.is_finite() && run.step_us > 0.0) {
-        let message = format!("µs per step must be a positive number, got {}", run.step_us);
-        return Err(MujocoError::Script { python: python.display().to_string(), message });
+
+    /// Times `steps` more `mj_step`s: µs per step.
+    pub fn time(&mut self, steps: usize) -> Result<f64, MujocoError> {
+        if let Err(e) = writeln!(self.input, "{steps}").and_then(|()| self.input.flush()) {
+            return Err(self.failed(&format!("cannot ask for a block: {e}")));
+        }
+        let step_us = self.answer::<Block>()?.step_us;
+        if !(step_us.is_finite() && step_us > 0.0) {
+            let message = format!("µs per step must be a positive number, got {step_us}");
+            return Err(MujocoError::Script { python: self.python.clone(), message });
+        }
+        Ok(step_us)
     }
-    Ok(run)
+
+    /// The script's next JSON line.
+    fn answer<T: serde::de::DeserializeOwned>(&mut self) -> Result<T, MujocoError> {
+        let mut line = String::new();
+        match self.output.read_line(&mut line) {
+            Ok(0) => Err(self.failed("it ended")),
+            Ok(_) => parse(Path::new(&self.python), &line),
+            Err(e) => Err(self.failed(&format!("cannot read its answer: {e}"))),
+        }
+    }
+
+    /// The error of a script that stopped answering: how it ended and the
+    /// last line of its error output (exit code 3: no mujoco module).
+    fn failed(&mut self, what: &str) -> MujocoError {
+        let python = self.python.clone();
+        self.child.kill().ok();
+        let status = self.child.wait().ok();
+        let mut stderr = String::new();
+        if let Some(e) = self.child.stderr.as_mut() {
+            e.read_to_string(&mut stderr).ok();
+        }
+        if status.and_then(|s| s.code()) == Some(3) {
+            return MujocoError::NoMujoco { python };
+        }
+        let last = stderr.trim().lines().last().unwrap_or("no message");
+        let status = status.map_or("not waited for".to_string(), |s| s.to_string());
+        MujocoError::Script { python, message: format!("{what} ({status}): {last}") }
+    }
+}
+
+impl Drop for Rival {
+    fn drop(&mut self) {
+        self.child.kill().ok();
+        self.child.wait().ok();
+    }
 }
 
 /// Runs the script with `args`; returns its standard output.
