@@ -304,7 +304,10 @@ impl Contact {
             }
             FrictionState::Static => {}
         }
-        self.spread(motion, object, settings, scratch);
+        // A static contact's anchors have not moved since `press` placed
+        // its site: the patch is spread there.
+        let site = (law.state == FrictionState::Static).then_some(at);
+        self.spread(site, motion, object, settings, scratch);
         true
     }
 
@@ -322,17 +325,18 @@ impl Contact {
         friction::damped_spring_force(spring, object.damping, relative_velocity)
     }
 
-    /// Spreads this step's force over the skin patch (§3.5.4).
+    /// Spreads this step's force over the skin patch (§3.5.4), at `site`
+    /// if the anchors are still where it was found, else where they are.
     fn spread(
         &mut self,
+        site: Option<Site>,
         motion: &BoneMotion,
         object: &ObjectView,
         settings: &LawSettings,
         scratch: &mut patch::PatchScratch,
     ) {
-        let pose = &object.pose;
         let anchor = &self.anchor;
-        let center = pose.transform_point(anchor.c_local);
+        let site = site.unwrap_or_else(|| anchor.site(object, motion));
         let rocking = if anchor.rigid {
             patch::Rocking::rigid(object, anchor.samples.len(), anchor.radius, settings)
         } else {
@@ -341,8 +345,8 @@ impl Contact {
         let skin = Mat3::from_quat(anchor.bone.rotation(motion.now, &motion.palm_now));
         let skin_before = Mat3::from_quat(anchor.bone.rotation(motion.prev, &motion.palm_prev));
         let step = patch::PatchStep {
-            center,
-            normal: (pose.rotation * anchor.n_local).normalize_or_zero(),
+            center: site.c,
+            normal: site.surface_n,
             skin,
             skin_rate: (skin - skin_before) * (1.0 / settings.dt),
             force: self.force,
@@ -354,7 +358,7 @@ impl Contact {
             deviation_springs: settings.deviation_springs,
         };
         patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
-        self.point = step.center;
-        self.normal = self.anchor.bone.normal(&motion.palm_now, step.normal);
+        self.point = site.c;
+        self.normal = site.n;
     }
 }
