@@ -227,9 +227,10 @@ impl Contact {
     }
 
     /// Evaluates the contact law for this step and updates the anchors:
-    /// reaction → resolve → slip → spread over the patch. Appends the
-    /// sample forces on the object, with their points, to
-    /// `scratch.applied` (nothing if it applies none). `press` is this
+    /// reaction → resolve → slip → spread over the patch. Leaves the
+    /// sample forces on the object, with their points, in `scratch`
+    /// ([`patch::PatchScratch::for_each_applied`]; none if it applies
+    /// none: the caller clears it first). `press` is this
     /// step's [`Self::press`]; `object` carries the contact's own γ and
     /// damping (its share of its virtual finger's, under the stability
     /// limit).

@@ -111,21 +111,30 @@ impl TraceFile {
     /// A trace to be written at `path`. Its folder is checked now, so a
     /// path that cannot be written is named before a run starts.
     pub fn at(path: &std::path::Path) -> std::io::Result<TraceFile> {
+        use std::io::{Error, ErrorKind};
         let folder = path.parent().filter(|f| !f.as_os_str().is_empty());
-        std::fs::metadata(folder.unwrap_or(std::path::Path::new(".")))
-            .map_err(|e| named(path, e))?;
-        Ok(TraceFile { path: path.to_path_buf(), out: None })
+        let folder = std::fs::metadata(folder.unwrap_or(std::path::Path::new(".")));
+        let problem = match folder {
+            Err(e) => Some(e),
+            Ok(f) if !f.is_dir() => {
+                Some(Error::new(ErrorKind::NotADirectory, "its parent is not a directory"))
+            }
+            Ok(_) if path.is_dir() => Some(Error::new(ErrorKind::IsADirectory, "is a directory")),
+            Ok(_) => None,
+        };
+        match problem {
+            Some(e) => Err(named(path, e)),
+            None => Ok(TraceFile { path: path.to_path_buf(), out: None }),
+        }
     }
 
     /// The file, created at the first call.
     fn file(&mut self) -> std::io::Result<&mut std::io::BufWriter<std::fs::File>> {
-        let out = match self.out.take() {
-            Some(out) => out,
-            None => std::io::BufWriter::new(
-                std::fs::File::create(&self.path).map_err(|e| named(&self.path, e))?,
-            ),
-        };
-        Ok(self.out.insert(out))
+        if self.out.is_none() {
+            let file = std::fs::File::create(&self.path).map_err(|e| named(&self.path, e))?;
+            self.out = Some(std::io::BufWriter::new(file));
+        }
+        self.out.as_mut().ok_or_else(|| std::io::ErrorKind::NotFound.into())
     }
 }
 

@@ -57,7 +57,7 @@ fn mujoco_times_a_block_as_long_after_each_block_of_ours() {
     // 7 µs per step per step asked for: a block's answer says how long it was.
     let log = dir.text("blocks.log");
     let serve = format!(
-        "while read n; do echo $n >> {log}; echo \"{{\\\"step_us\\\": $((n * 7))}}\"; done"
+        "while read n; do echo $n >> '{log}'; echo \"{{\\\"step_us\\\": $((n * 7))}}\"; done"
     );
     let python = stand_in_python(&dir, &serve);
     let args = ["bench", "--mujoco", "--python", &python, "--steps", "130", "--no-objects"];
@@ -82,14 +82,34 @@ fn mujoco_times_a_block_as_long_after_each_block_of_ours() {
 
 #[cfg(unix)]
 #[test]
+fn a_mujoco_that_warns_at_length_does_not_stall_the_bench() {
+    let dir = Scratch::new("bench-rival-warns");
+    // 200 kB of warnings a block: more than a pipe holds.
+    let warn = "yes 'UserWarning: something' | head -c 200000 >&2";
+    let serve = format!("while read n; do {warn}; echo '{{\"step_us\": 900}}'; done");
+    let python = stand_in_python(&dir, &serve);
+    let args = ["bench", "--mujoco", "--python", &python, "--steps", "130", "--no-objects"];
+    let (code, stdout, stderr) = run(&[&args[..], &["--json"]].concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    let report: BenchReport = serde_json::from_str(&stdout).expect("a BenchReport");
+    assert_eq!(report.mujoco.expect("MuJoCo's step").step_us, 900.0);
+}
+
+#[cfg(unix)]
+#[test]
 fn a_mujoco_that_stops_answering_is_named() {
     let dir = Scratch::new("bench-rival-ends");
-    let python = stand_in_python(&dir, "read n; echo 'RuntimeError: boom' >&2; exit 1");
-    let e = cli_error(&["bench", "--mujoco", "--python", &python, "--steps", "10"]);
-    let expected = format!(
-        "{python} bench/mujoco_reference.py failed: it ended (exit status: 1): RuntimeError: boom"
-    );
-    assert_eq!(e, expected);
+    // It ends while timing its first block, or before it is asked for one
+    // (a write to it then would end the bench by SIGPIPE, without a word).
+    for (serve, last) in [
+        ("read n; echo 'RuntimeError: boom' >&2; exit 1", "RuntimeError: boom"),
+        ("echo 'ImportError: gone' >&2; exit 1", "ImportError: gone"),
+    ] {
+        let python = stand_in_python(&dir, serve);
+        let e = cli_error(&["bench", "--mujoco", "--python", &python, "--steps", "10"]);
+        let ended = "bench/mujoco_reference.py failed: it ended (exit status: 1)";
+        assert_eq!(e, format!("{python} {ended}: {last}"));
+    }
 }
 
 #[test]

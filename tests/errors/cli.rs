@@ -95,6 +95,13 @@ fn outputs_that_cannot_be_written_are_named() {
     assert_eq!(e, format!("output: {trace}: No such file or directory (os error 2)"));
     let e = cli_error(&["scenario", "push", "--trace", &trace]);
     assert_eq!(e, format!("output: {trace}: No such file or directory (os error 2)"));
+    // Named before the run too: a folder, and a file taken for a folder.
+    std::fs::create_dir(dir.path("traces")).expect("a folder");
+    let e = cli_error(&["replay", "--trace", &dir.text("traces"), &one]);
+    assert_eq!(e, format!("output: {}: is a directory", dir.text("traces")));
+    let under_a_file = format!("{one}/trace.jsonl");
+    let e = cli_error(&["scenario", "push", "--trace", &under_a_file]);
+    assert_eq!(e, format!("output: {under_a_file}: its parent is not a directory"));
     let record = dir.text("no-dir/session.json");
     let e = cli_error(&["replay", "--record", &record, &one]);
     assert_eq!(e, format!("{record}: No such file or directory (os error 2)"));

@@ -117,10 +117,11 @@ pub enum BenchError {
     Mujoco(#[from] mujoco::MujocoError),
 }
 
-/// Runs the whole bench: the sweep, the reference scene asleep and awake,
-/// then MuJoCo's side if asked for (checked before anything is timed, so a
-/// missing MuJoCo fails at once). `progress` is told of every block of
-/// steps done ([`BenchOptions::total_steps`] in all).
+/// Runs the whole bench: the sweep, the reference scene asleep and awake
+/// (with MuJoCo's side beside it if asked for, checked before anything is
+/// timed, so a missing MuJoCo fails at once), then the cluttered scenes.
+/// `progress` is told of every block of our steps done
+/// ([`BenchOptions::total_steps`] in all).
 pub fn run(
     options: &BenchOptions,
     progress: &mut dyn FnMut(u64),

@@ -75,8 +75,13 @@ pub fn check(python: &Path) -> Result<String, MujocoError> {
 pub struct Rival {
     python: String,
     child: Child,
-    input: ChildStdin,
+    /// Its standard input, closed (`None`) when it is being ended, so that
+    /// a wrapper's own child sees the end of its input too.
+    input: Option<ChildStdin>,
     output: BufReader<ChildStdout>,
+    /// Its error output, read as it comes (a full pipe would stall it): the
+    /// last line.
+    errors: Option<std::thread::JoinHandle<String>>,
     /// MuJoCo's settings ([`SETTINGS`]).
     pub settings: String,
 }
@@ -109,19 +114,35 @@ impl Rival {
             .stderr(Stdio::piped())
             .spawn()
             .map_err(|e| MujocoError::NoPython { python: name.clone(), message: e.to_string() })?;
-        let (Some(input), Some(output)) = (child.stdin.take(), child.stdout.take()) else {
-            let message = "its standard input and output are not pipes".to_string();
+        let pipes = (child.stdin.take(), child.stdout.take(), child.stderr.take());
+        let (Some(input), Some(output), Some(errors)) = pipes else {
+            let message = "its standard streams are not pipes".to_string();
             return Err(MujocoError::Script { python: name, message });
         };
-        let output = BufReader::new(output);
-        let mut rival = Rival { python: name, child, input, output, settings: String::new() };
+        let mut rival = Rival {
+            python: name,
+            child,
+            input: Some(input),
+            output: BufReader::new(output),
+            errors: Some(std::thread::spawn(move || last_line(errors))),
+            settings: String::new(),
+        };
         rival.settings = rival.answer::<Ready>()?.settings;
         Ok(rival)
     }
 
     /// Times `steps` more `mj_step`s: µs per step.
     pub fn time(&mut self, steps: usize) -> Result<f64, MujocoError> {
-        if let Err(e) = writeln!(self.input, "{steps}").and_then(|()| self.input.flush()) {
+        // Writing to a script that has ended would raise SIGPIPE, whose
+        // default (restored by the CLI) ends this process without a word.
+        if !matches!(self.child.try_wait(), Ok(None)) {
+            return Err(self.failed("it ended"));
+        }
+        let asked = match self.input.as_mut() {
+            Some(input) => writeln!(input, "{steps}").and_then(|()| input.flush()),
+            None => Err(std::io::ErrorKind::BrokenPipe.into()),
+        };
+        if let Err(e) = asked {
             return Err(self.failed(&format!("cannot ask for a block: {e}")));
         }
         let step_us = self.answer::<Block>()?.step_us;
@@ -142,20 +163,25 @@ impl Rival {
         }
     }
 
+    /// Ends the script: its input closed, then killed; how it ended.
+    fn end(&mut self) -> Option<std::process::ExitStatus> {
+        self.input = None;
+        self.child.kill().ok();
+        self.child.wait().ok()
+    }
+
     /// The error of a script that stopped answering: how it ended and the
     /// last line of its error output (exit code 3: no mujoco module).
     fn failed(&mut self, what: &str) -> MujocoError {
         let python = self.python.clone();
-        self.child.kill().ok();
-        let status = self.child.wait().ok();
-        let mut stderr = String::new();
-        if let Some(e) = self.child.stderr.as_mut() {
-            e.read_to_string(&mut stderr).ok();
-        }
+        let status = self.end();
+        // Its error output ends with it (or with a wrapper's child, which
+        // ends at the end of its input).
+        let last = self.errors.take().and_then(|e| e.join().ok()).unwrap_or_default();
         if status.and_then(|s| s.code()) == Some(3) {
             return MujocoError::NoMujoco { python };
         }
-        let last = stderr.trim().lines().last().unwrap_or("no message");
+        let last = if last.is_empty() { "no message" } else { last.as_str() };
         let status = status.map_or("not waited for".to_string(), |s| s.to_string());
         MujocoError::Script { python, message: format!("{what} ({status}): {last}") }
     }
@@ -163,9 +189,14 @@ impl Rival {
 
 impl Drop for Rival {
     fn drop(&mut self) {
-        self.child.kill().ok();
-        self.child.wait().ok();
+        self.end();
     }
+}
+
+/// The last line of `stream` that is not blank, read to its end.
+fn last_line(stream: impl Read) -> String {
+    let lines = BufReader::new(stream).lines().map_while(Result::ok);
+    lines.filter(|l| !l.trim().is_empty()).last().map(|l| l.trim().to_string()).unwrap_or_default()
 }
 
 /// Runs the script with `args`; returns its standard output.
