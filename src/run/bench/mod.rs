@@ -141,29 +141,43 @@ pub fn run(
         sweep.push(SweepPoint { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
     }
     let (reference, mujoco) = reference(options, progress)?;
-    let mut objects = Vec::with_capacity(options.objects.len());
-    for &n in &options.objects {
-        objects.push(cluttered(n, options.steps, progress)?);
-    }
+    let objects = cluttered(&options.objects, options.steps, progress)?;
     Ok(BenchReport { sweep, reference, mujoco, objects })
 }
 
-/// The cluttered scene of `objects` objects: its first second untimed
-/// (the clutter settles and falls asleep), then `steps` timed.
+/// The cluttered scenes, one per object count of `counts`. Each first
+/// runs its first second untimed (the clutter settles and falls asleep);
+/// then they are timed a block each in turn, round after round, for
+/// `steps` steps each. So every scene is timed across the same stretch of
+/// the machine's time, and how the layer grows with the scene does not
+/// hang on when each scene ran.
 fn cluttered(
-    objects: usize,
+    counts: &[usize],
     steps: usize,
     progress: &mut dyn FnMut(u64),
-) -> Result<ObjectsPoint, BenchError> {
-    let mut world = cluttered_scene(bench_config(), objects)?;
-    self::steps(&mut world, ONE_SECOND, progress)?;
-    let times = time_split(&mut world, steps, progress)?;
-    let awake = (0..world.object_count())
-        .filter_map(|o| world.object_state(crate::scene::ObjectId(o as u32)).ok())
-        .filter(|state| !state.sleeping)
-        .count();
-    let objects = world.object_count();
-    Ok(ObjectsPoint { objects, bones_pressing: bones_pressing(&world), awake, times })
+) -> Result<Vec<ObjectsPoint>, BenchError> {
+    let mut worlds = Vec::with_capacity(counts.len());
+    for &objects in counts {
+        let mut world = cluttered_scene(bench_config(), objects)?;
+        self::steps(&mut world, ONE_SECOND, progress)?;
+        worlds.push(world);
+    }
+    let mut blocks = vec![Vec::new(); worlds.len()];
+    for n in block_lengths(steps) {
+        for (world, blocks) in worlds.iter_mut().zip(&mut blocks) {
+            blocks.push(time_block(world, n)?);
+            progress(n as u64);
+        }
+    }
+    let point = |(world, blocks): (&InteractionWorld, &Vec<[f64; 3]>)| {
+        let awake = (0..world.object_count())
+            .filter_map(|o| world.object_state(crate::scene::ObjectId(o as u32)).ok())
+            .filter(|state| !state.sleeping)
+            .count();
+        let (objects, bones_pressing) = (world.object_count(), bones_pressing(world));
+        ObjectsPoint { objects, bones_pressing, awake, times: medians(blocks) }
+    };
+    Ok(worlds.iter().zip(&blocks).map(point).collect())
 }
 
 /// How much the interaction layer grows from the fewest objects timed to
@@ -279,24 +293,37 @@ fn time_blocks(
     progress: &mut dyn FnMut(u64),
     after_block: AfterBlock,
 ) -> Result<StepTimes, BenchError> {
-    let steps = steps.max(1);
     let mut blocks = Vec::with_capacity(steps.div_ceil(BLOCK));
-    let mut driver = Driver::new(world);
-    let mut done = 0;
-    while done < steps {
-        let n = BLOCK.min(steps - done);
-        let mut watch = Stopwatch::default();
-        driver.run(n, &mut [&mut watch])?;
-        let per_step = |ns: u128| ns as f64 / n as f64 / 1e3;
-        let (hands, rapier) = (watch.hands_ns, watch.rapier_ns);
-        let block = [per_step(hands), per_step(rapier), per_step(hands + rapier)];
+    for n in block_lengths(steps) {
+        let block = time_block(world, n)?;
         after_block(n, &block)?;
         blocks.push(block);
-        done += n;
         progress(n as u64);
     }
+    Ok(medians(&blocks))
+}
+
+/// The blocks `steps` steps (at least 1) are timed in: [`BLOCK`] steps
+/// each, the last what is left.
+fn block_lengths(steps: usize) -> impl Iterator<Item = usize> {
+    let steps = steps.max(1);
+    (0..steps).step_by(BLOCK).map(move |done| BLOCK.min(steps - done))
+}
+
+/// Times `n` steps of `world` through the driver loop: µs per step,
+/// `[interaction layer, rapier, full]`.
+fn time_block(world: &mut InteractionWorld, n: usize) -> Result<[f64; 3], BenchError> {
+    let mut watch = Stopwatch::default();
+    Driver::new(world).run(n, &mut [&mut watch])?;
+    let per_step = |ns: u128| ns as f64 / n as f64 / 1e3;
+    let (hands, rapier) = (watch.hands_ns, watch.rapier_ns);
+    Ok([per_step(hands), per_step(rapier), per_step(hands + rapier)])
+}
+
+/// Per quantity, the median over `blocks` of their µs per step.
+fn medians(blocks: &[[f64; 3]]) -> StepTimes {
     let median = |i: usize| median(blocks.iter().map(|b| b[i]).collect());
-    Ok(StepTimes { interaction_us: median(0), rapier_us: median(1), full_us: median(2) })
+    StepTimes { interaction_us: median(0), rapier_us: median(1), full_us: median(2) }
 }
 
 /// Times each step's halves: the hand forces, from before the step to
