@@ -92,13 +92,17 @@ impl Vec3Lanes {
     /// cheaper than [`Self::iter`] on a hot path.
     #[inline]
     pub fn for_each(&self, mut f: impl FnMut(Vec3)) {
-        let mut left = self.len;
-        for chunk in &self.chunks {
-            for k in 0..left.min(LANES) {
+        for (j, chunk) in self.chunks.iter().enumerate() {
+            for k in 0..self.used(j) {
                 f(lane(chunk, k));
             }
-            left = left.saturating_sub(LANES);
         }
+    }
+
+    /// How many lanes of chunk `j` hold items (0 to [`LANES`]).
+    #[inline]
+    pub fn used(&self, j: usize) -> usize {
+        self.len.saturating_sub(j * LANES).min(LANES)
     }
 
     /// The chunks, the last one padded.
@@ -127,7 +131,7 @@ impl Vec3Lanes {
         /// The mask of `used` lanes, by `used`.
         const MASKS: [[f32; LANES]; LANES + 1] =
             [[0.0; LANES], [ON, 0.0, 0.0, 0.0], [ON, ON, 0.0, 0.0], [ON, ON, ON, 0.0], [ON; LANES]];
-        f32x4::new(MASKS[self.len.saturating_sub(j * LANES).min(LANES)])
+        f32x4::new(MASKS[self.used(j)])
     }
 }
 

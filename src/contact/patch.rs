@@ -209,13 +209,11 @@ fn lane_push_only(forces: &mut Vec3Lanes, n: Vec3) {
     let normal = lanes::splat(n);
     let push = |f: &Chunk| -lanes::dot(*f, normal);
     let (mut total, mut pressing) = (0.0f32, 0.0f32);
-    let mut left = forces.len();
-    for f in forces.chunks() {
-        for &p in push(f).as_array().iter().take(left) {
+    for (j, f) in forces.chunks().iter().enumerate() {
+        for &p in push(f).as_array().iter().take(forces.used(j)) {
             total += p;
             pressing += p.max(0.0);
         }
-        left = left.saturating_sub(LANES);
     }
     if total <= 0.0 || pressing <= total {
         return; // nothing pulls, or nothing presses
@@ -281,13 +279,12 @@ impl PatchScratch {
     #[inline]
     pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(Vec3, Vec3, Vec3)) {
         let origin = lanes::splat(origin);
-        let mut left = self.forces.len();
-        for (force, point) in self.forces.chunks().iter().zip(self.points.chunks()) {
+        let chunks = self.forces.chunks().iter().zip(self.points.chunks());
+        for (j, (force, point)) in chunks.enumerate() {
             let torque = lanes::cross(lanes::sub(*point, origin), *force);
-            for k in 0..left.min(LANES) {
+            for k in 0..self.forces.used(j) {
                 f(lanes::lane(force, k), lanes::lane(point, k), lanes::lane(&torque, k));
             }
-            left = left.saturating_sub(LANES);
         }
     }
 }

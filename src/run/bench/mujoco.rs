@@ -170,21 +170,35 @@ impl Rival {
         self.child.wait().ok()
     }
 
-    /// The error of a script that stopped answering: how it ended and the
-    /// last line of its error output (exit code 3: no mujoco module).
+    /// The error of a script that stopped answering while doing `what`.
     fn failed(&mut self, what: &str) -> MujocoError {
-        let python = self.python.clone();
         let status = self.end();
         // Its error output ends with it (or with a wrapper's child, which
         // ends at the end of its input).
         let last = self.errors.take().and_then(|e| e.join().ok()).unwrap_or_default();
-        if status.and_then(|s| s.code()) == Some(3) {
-            return MujocoError::NoMujoco { python };
-        }
-        let last = if last.is_empty() { "no message" } else { last.as_str() };
-        let status = status.map_or("not waited for".to_string(), |s| s.to_string());
-        MujocoError::Script { python, message: format!("{what} ({status}): {last}") }
+        ended(self.python.clone(), status, Some(what), &last)
     }
+}
+
+/// The error of a script that ended with `status`: no mujoco module (exit
+/// code 3), or else how it ended, after `what` it was doing if said, and
+/// `last`, the last line of its error output.
+fn ended(
+    python: String,
+    status: Option<std::process::ExitStatus>,
+    what: Option<&str>,
+    last: &str,
+) -> MujocoError {
+    if status.and_then(|s| s.code()) == Some(3) {
+        return MujocoError::NoMujoco { python };
+    }
+    let last = if last.is_empty() { "no message" } else { last };
+    let status = status.map_or("not waited for".to_string(), |s| s.to_string());
+    let message = match what {
+        Some(what) => format!("{what} ({status}): {last}"),
+        None => format!("{status}: {last}"),
+    };
+    MujocoError::Script { python, message }
 }
 
 impl Drop for Rival {
@@ -208,14 +222,9 @@ fn script(python: &Path, args: &[String]) -> Result<String, MujocoError> {
         .args(args)
         .output()
         .map_err(|e| MujocoError::NoPython { python: name.clone(), message: e.to_string() })?;
-    let stderr = String::from_utf8_lossy(&out.stderr);
     match out.status.code() {
         Some(0) => Ok(String::from_utf8_lossy(&out.stdout).into_owned()),
-        Some(3) => Err(MujocoError::NoMujoco { python: name }),
-        _ => {
-            let message = stderr.trim().lines().last().unwrap_or("no message").to_string();
-            Err(MujocoError::Script { python: name, message: format!("{}: {message}", out.status) })
-        }
+        _ => Err(ended(name, Some(out.status), None, &last_line(&out.stderr[..]))),
     }
 }
 
