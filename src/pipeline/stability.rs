@@ -11,6 +11,7 @@
 //! force: the friction threshold, a force ratio, is unchanged). This only
 //! binds for light objects in many-finger grasps, or for long steps.
 
+use super::config::InteractionConfig;
 use super::step::StepScratch;
 use super::world::{InteractionWorld, ObjectSlot};
 use crate::friction;
@@ -31,13 +32,13 @@ impl StabilityScale {
     pub const NONE: StabilityScale = StabilityScale { stiffness: 1.0, damping: 1.0, contacts: 1 };
 }
 
-impl InteractionWorld {
-    /// An object's contact damping `c` before the stability limit (N·s/m).
-    pub(super) fn nominal_damping(&self, slot: &ObjectSlot) -> f32 {
-        let zeta = self.config.damping_ratio;
-        zeta.map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z))
-    }
+/// An object's contact damping `c` before the stability limit (N·s/m).
+pub(super) fn nominal_damping(config: &InteractionConfig, slot: &ObjectSlot) -> f32 {
+    let zeta = config.damping_ratio;
+    zeta.map_or(0.0, |z| friction::damping_coefficient(slot.gamma, slot.mass, z))
+}
 
+impl InteractionWorld {
     /// Sets the stability limit of each object with a contact this step
     /// (`step.limits[o]`; the other objects' entries are stale and unread,
     /// so a step's cost does not grow with the scene).
@@ -66,7 +67,7 @@ impl InteractionWorld {
                 step.touched.push(o);
             }
             limit.stiffness += slot.gamma * w;
-            limit.damping += self.nominal_damping(slot) * w;
+            limit.damping += nominal_damping(&self.config, slot) * w;
             limit.contacts += 1;
         }
         for &o in &step.touched {

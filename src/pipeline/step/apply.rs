@@ -1,34 +1,34 @@
 //! Stage 6: a contact's forces go to rapier.
 
-use crate::contact::patch::PatchScratch;
+use super::update::Stage;
 use crate::friction;
-use crate::pipeline::InteractionWorld;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;
 use glam::Vec3;
 
-impl InteractionWorld {
-    /// Applies a contact's sample forces to its object, as rapier's
-    /// `add_force_at_point` would one by one, skipping any that is not
-    /// finite, and adds them to the object's total hand force
-    /// ([`friction::total_force`]: the samples of a contact share its force
-    /// exactly, so their sum is the contacts' sum).
+impl Stage<'_> {
+    /// Applies the sample forces of the contact just updated (in
+    /// `self.patch`) to its object, as rapier's `add_force_at_point` would
+    /// one by one, skipping any that is not finite, and adds them to the
+    /// object's total hand force ([`friction::total_force`]: the samples
+    /// of a contact share its force exactly, so their sum is the
+    /// contacts' sum).
     ///
     /// The body's force and torque are summed here and written back once:
     /// the same sums, in the same order, as `add_force_at_point` per sample
     /// (so the same bits), without its per-sample checks and wake-ups.
-    pub(super) fn apply_forces(&mut self, object: ObjectId, patch: &PatchScratch) {
+    pub(super) fn apply_forces(&mut self, object: ObjectId) {
         let slot = &mut self.objects[object.0 as usize];
         if !slot.forced {
             slot.forced = true;
             self.forced.push(object.0);
         }
-        let body = &mut self.physics.bodies[slot.body];
+        let body = &mut self.bodies[slot.body];
         let dynamic = body.is_dynamic();
         let com = body.center_of_mass();
         let (mut force, mut torque) = (body.user_force(), body.user_torque());
         let (mut total, mut pushed) = (slot.hand_force, false);
-        patch.for_each_applied(com, |f, at, about_com| {
+        self.patch.for_each_applied(com, |f, at, about_com| {
             if !firewall::force(f, at) {
                 return;
             }

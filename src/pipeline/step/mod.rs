@@ -16,7 +16,7 @@
 //! 7. `grab.rs`: for the grab baselines only, a qualifying grasp moves
 //!    its object with the hand.
 //!
-//! Stages 5 and 6 run contact by contact, in update order.
+//! Stages 5 and 6 run contact by contact, in update order (`update.rs`).
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
 //! gravity, object–object contacts and integration.
@@ -34,8 +34,8 @@ pub(crate) use grab::GrabSlot;
 
 use super::config::InteractionConfig;
 use super::record::Call;
-use super::stability::StabilityScale;
-use super::world::InteractionWorld;
+use super::stability::{StabilityScale, nominal_damping};
+use super::world::{InteractionWorld, ObjectSlot};
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
 use crate::contact::{
@@ -44,6 +44,7 @@ use crate::contact::{
 use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
+use rapier3d::prelude::{ColliderSet, RigidBodySet};
 
 impl InteractionWorld {
     /// One full step: hand forces, then the physics engine.
@@ -67,38 +68,7 @@ impl InteractionWorld {
         self.find_new_contacts(&mut step);
         self.press_contacts(&mut step);
         self.stability_limits(&mut step);
-        // Stages 6 and 7 go contact by contact, so each patch's forces reach
-        // rapier while they are still in cache: the kept contacts in place,
-        // in their order, then the new ones.
-        let mut contacts = std::mem::take(&mut self.contacts);
-        let kept = std::mem::take(&mut step.kept);
-        let mut live = 0;
-        for (i, &Kept { proximity, motion }) in kept.iter().enumerate() {
-            let contact = &mut contacts[i];
-            // The poses have not changed since `keep_contacts` found it.
-            let touch = Touch { press: step.presses[i], proximity, motion, index: i };
-            if self.update_contact(contact, &touch, false, &mut step) {
-                self.apply_forces(contact.object, &step.patch);
-                // A swap in place would still copy the contact three times.
-                if live != i {
-                    contacts.swap(live, i);
-                }
-                live += 1;
-            }
-        }
-        contacts.truncate(live);
-        let mut found = std::mem::take(&mut step.found);
-        for (j, Candidate { mut contact, proximity, motion }) in found.drain(..).enumerate() {
-            let index = kept.len() + j;
-            let touch = Touch { press: step.presses[index], proximity, motion, index };
-            if self.update_contact(&mut contact, &touch, true, &mut step) {
-                self.apply_forces(contact.object, &step.patch);
-                contacts.push(contact);
-            }
-        }
-        (step.kept, step.found) = (kept, found);
-        contacts.sort_by_key(contact_key);
-        self.contacts = contacts;
+        self.update_contacts(&mut step);
         self.scratch = step;
         self.grab_objects();
     }
@@ -121,23 +91,8 @@ impl InteractionWorld {
     /// The object as the contact law sees it this step, with its contact
     /// stiffness and damping scaled by the stability limit.
     fn object_view(&self, index: usize, limit: StabilityScale) -> ObjectView<'_> {
-        let slot = &self.objects[index];
-        let body = &self.physics.bodies[slot.body];
-        let collider = &self.physics.colliders[slot.collider];
-        ObjectView {
-            id: ObjectId(index as u32),
-            pose: *collider.position(),
-            shape: collider.shape(),
-            linvel: body.linvel(),
-            angvel: body.angvel(),
-            center_of_mass: body.center_of_mass(),
-            inv_inertia: body.mass_properties().local_mprops.inv_principal_inertia.max_element(),
-            sharing: limit.contacts.max(1) as f32,
-            gamma: slot.gamma * limit.stiffness,
-            damping: self.nominal_damping(slot) * limit.damping,
-            cap: self.config.force_cap.then(|| ForceCap::for_diameter(slot.diameter)),
-            mu: if self.config.hand_friction { slot.material.skin } else { NO_FRICTION },
-        }
+        let physics = &self.physics;
+        view_of(index, &self.objects, &physics.bodies, &physics.colliders, &self.config, limit)
     }
 
     /// A bone's shape now and one step ago, if its hand is tracked.
@@ -154,9 +109,44 @@ impl InteractionWorld {
     }
 
     fn push_event(&mut self, kind: ContactEventKind, c: &Contact) {
-        let (hand, bone, object, point, time) = (c.hand, c.bone, c.object, c.point, self.time);
-        self.events.push(ContactEvent { kind, hand, bone, object, point, time });
+        push_event(&mut self.events, self.time, kind, c);
     }
+}
+
+/// Object `index`'s view ([`InteractionWorld::object_view`]), read from
+/// the world's parts: it borrows only the colliders (for its shape), so
+/// stage 6 keeps one while it writes the bodies' forces.
+fn view_of<'c>(
+    index: usize,
+    objects: &[ObjectSlot],
+    bodies: &RigidBodySet,
+    colliders: &'c ColliderSet,
+    config: &InteractionConfig,
+    limit: StabilityScale,
+) -> ObjectView<'c> {
+    let slot = &objects[index];
+    let body = &bodies[slot.body];
+    let collider = &colliders[slot.collider];
+    ObjectView {
+        id: ObjectId(index as u32),
+        pose: *collider.position(),
+        shape: collider.shape(),
+        linvel: body.linvel(),
+        angvel: body.angvel(),
+        center_of_mass: body.center_of_mass(),
+        inv_inertia: body.mass_properties().local_mprops.inv_principal_inertia.max_element(),
+        sharing: limit.contacts.max(1) as f32,
+        gamma: slot.gamma * limit.stiffness,
+        damping: nominal_damping(config, slot) * limit.damping,
+        cap: config.force_cap.then(|| ForceCap::for_diameter(slot.diameter)),
+        mu: if config.hand_friction { slot.material.skin } else { NO_FRICTION },
+    }
+}
+
+/// Records a contact's event at `time` (s).
+fn push_event(events: &mut Vec<ContactEvent>, time: f64, kind: ContactEventKind, c: &Contact) {
+    let (hand, bone, object, point) = (c.hand, c.bone, c.object, c.point);
+    events.push(ContactEvent { kind, hand, bone, object, point, time });
 }
 
 /// Skin friction of a baseline's hand, which pushes but does not hold.
@@ -177,18 +167,6 @@ pub(super) struct Candidate {
 pub(super) struct Kept {
     pub proximity: Option<Proximity>,
     pub motion: BoneMotion,
-}
-
-/// What stage 6 knows of a contact it updates.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Touch {
-    /// This step's press, found by stage 4.
-    pub press: Press,
-    /// The closest features, if a stage has queried them this step.
-    pub proximity: Option<Proximity>,
-    pub motion: BoneMotion,
-    /// The contact's place in this step's presses and shares.
-    pub index: usize,
 }
 
 /// The order of [`InteractionWorld::contacts`]: by object, then hand, then

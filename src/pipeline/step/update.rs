@@ -1,41 +1,129 @@
-//! Stage 6: a contact evaluates the contact law.
+//! Stages 5 and 6, contact by contact: a contact evaluates the contact
+//! law, and its forces go to rapier (`apply.rs`) while its patch is still
+//! in cache.
 
-use super::{StepScratch, Touch};
-use crate::contact::{Contact, ContactEventKind};
+use super::{Candidate, StepScratch, push_event, view_of};
+use crate::contact::detect::{Detector, Proximity};
+use crate::contact::patch::PatchScratch;
+use crate::contact::{
+    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Press,
+};
 use crate::pipeline::InteractionWorld;
+use crate::pipeline::config::InteractionConfig;
+use crate::pipeline::stability::StabilityScale;
+use crate::pipeline::world::ObjectSlot;
+use rapier3d::prelude::{ColliderSet, RigidBodySet};
 
 impl InteractionWorld {
-    /// Updates one kept or new contact with its share of its virtual
-    /// finger's γ, under its object's stability limit ([`Contact::update`]),
-    /// leaving its sample forces in `step.patch`. A contact that
-    /// has ended gets its `Ended` event and `false`; a new one that lives
-    /// gets its `Began` event.
-    pub(super) fn update_contact(
+    /// Updates every contact and applies its forces: the kept ones in
+    /// place, in their order, then the new ones. Ended contacts are
+    /// dropped; the rest stay sorted by [`super::contact_key`].
+    pub(super) fn update_contacts(&mut self, step: &mut StepScratch) {
+        let mut contacts = std::mem::take(&mut self.contacts);
+        let mut found = std::mem::take(&mut step.found);
+        let InteractionWorld { physics, config, objects, events, forced, time, .. } = self;
+        let StepScratch { kept, presses, shares, limits, settings, detector, patch, .. } = step;
+        let mut stage = Stage {
+            colliders: &physics.colliders,
+            config,
+            presses,
+            shares,
+            limits,
+            settings,
+            detector,
+            objects,
+            bodies: &mut physics.bodies,
+            forced,
+            events,
+            time: *time,
+            patch,
+            view: None,
+        };
+        let mut live = 0;
+        for (i, kept) in kept.iter().enumerate() {
+            // The poses have not changed since `keep_contacts` found it.
+            if stage.update(&mut contacts[i], kept.proximity, &kept.motion, i, false) {
+                // A swap in place would still copy the contact three times.
+                if live != i {
+                    contacts.swap(live, i);
+                }
+                live += 1;
+            }
+        }
+        contacts.truncate(live);
+        let first_new = kept.len();
+        for (j, Candidate { mut contact, proximity, motion }) in found.drain(..).enumerate() {
+            if stage.update(&mut contact, proximity, &motion, first_new + j, true) {
+                contacts.push(contact);
+            }
+        }
+        step.found = found;
+        contacts.sort_by_key(super::contact_key);
+        self.contacts = contacts;
+    }
+}
+
+/// Stage 6's borrows of the world: what it reads (the colliders, for the
+/// objects' shapes) apart from what it writes (the bodies' forces, the
+/// events), so that one object's view serves its whole run of contacts.
+pub(super) struct Stage<'w> {
+    colliders: &'w ColliderSet,
+    config: &'w InteractionConfig,
+    /// Per contact, in update order: its press and its share of its
+    /// virtual finger's γ (stage 4).
+    presses: &'w [Press],
+    shares: &'w [f32],
+    /// Per object, its stability limit (stage 4).
+    limits: &'w [StabilityScale],
+    settings: &'w LawSettings,
+    detector: &'w Detector,
+    pub(super) objects: &'w mut [ObjectSlot],
+    pub(super) bodies: &'w mut RigidBodySet,
+    pub(super) forced: &'w mut Vec<u32>,
+    events: &'w mut Vec<ContactEvent>,
+    time: f64,
+    pub(super) patch: &'w mut PatchScratch,
+    /// The last object's view under its stability limit, before any
+    /// contact's share: applying forces changes none of what it holds.
+    view: Option<ObjectView<'w>>,
+}
+
+impl Stage<'_> {
+    /// Updates one kept or new contact, the `index`-th in update order,
+    /// with its share of its virtual finger's γ under its object's
+    /// stability limit ([`Contact::update`]), and applies its forces. A
+    /// contact that has ended gets its `Ended` event and `false`; a new
+    /// one that lives gets its `Began` event.
+    fn update(
         &mut self,
         contact: &mut Contact,
-        touch: &Touch,
+        proximity: Option<Proximity>,
+        motion: &BoneMotion,
+        index: usize,
         is_new: bool,
-        step: &mut StepScratch,
     ) -> bool {
         let o = contact.object.0 as usize;
-        let object = self.object_view(o, step.limits[o]).shared(step.shares[touch.index]);
-        step.patch.clear();
-        let settings = &step.settings;
-        let Touch { press, proximity, motion, .. } = touch;
-        let alive = contact.update(
-            press,
-            *proximity,
-            &step.detector,
-            motion,
-            &object,
-            settings,
-            &mut step.patch,
-        );
+        let view = match self.view {
+            Some(view) if view.id == contact.object => view,
+            _ => {
+                let (objects, bodies) = (&*self.objects, &*self.bodies);
+                let view = view_of(o, objects, bodies, self.colliders, self.config, self.limits[o]);
+                *self.view.insert(view)
+            }
+        };
+        let object = view.shared(self.shares[index]);
+        self.patch.clear();
+        let (press, settings) = (&self.presses[index], self.settings);
+        let alive =
+            contact.update(press, proximity, self.detector, motion, &object, settings, self.patch);
         if !alive {
-            self.push_event(ContactEventKind::Ended, contact);
-        } else if is_new {
-            self.push_event(ContactEventKind::Began, contact);
+            push_event(self.events, self.time, ContactEventKind::Ended, contact);
+            return false;
         }
-        alive
+        if is_new {
+            push_event(self.events, self.time, ContactEventKind::Began, contact);
+        }
+        self.apply_forces(contact.object);
+        true
     }
 }
