@@ -185,6 +185,14 @@ pub(crate) fn cross(a: Chunk, b: Chunk) -> Chunk {
     [a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0], a[0] * b[1] - b[0] * a[1]]
 }
 
+/// Which lanes of `c` hold a vector other than zero, as a bitmask (`-0.0`
+/// is zero, as in `glam`'s `!=`).
+#[inline]
+pub(crate) fn nonzero(c: &Chunk) -> u32 {
+    let zero = f32x4::ZERO;
+    !(c[0].simd_eq(zero) & c[1].simd_eq(zero) & c[2].simd_eq(zero)).to_bitmask() & 0b1111
+}
+
 /// A matrix's columns, each in every lane: splat once, multiply many.
 pub(crate) type Mat3Lanes = [Chunk; 3];
 
@@ -227,6 +235,15 @@ mod tests {
         assert_eq!(lanes.valid(0).to_bitmask(), 0b1111);
         assert_eq!(lanes.valid(1).to_bitmask(), 0b0001);
         assert_eq!(lanes.sum(), items().into_iter().sum::<Vec3>());
+    }
+
+    #[test]
+    fn nonzero_lanes_are_those_glam_calls_nonzero() {
+        let items = [Vec3::new(0.0, -0.0, 0.0), Vec3::new(0.0, 0.0, 1e-42), Vec3::ZERO, -Vec3::Y];
+        let chunk = Vec3Lanes::from_items(items).chunks()[0];
+        let glam = items.iter().enumerate().filter(|(_, v)| **v != Vec3::ZERO);
+        assert_eq!(nonzero(&chunk), glam.fold(0, |mask, (k, _)| mask | 1 << k));
+        assert_eq!(nonzero(&chunk), 0b1010);
     }
 
     #[test]

@@ -34,7 +34,7 @@
 pub(crate) mod anchor;
 pub(crate) mod detect;
 pub mod event;
-mod lanes;
+pub(crate) mod lanes;
 pub mod patch;
 pub mod surface;
 

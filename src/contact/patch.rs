@@ -272,19 +272,17 @@ impl PatchScratch {
         self.points.clear();
     }
 
-    /// Calls `f` with the last spread contact's force on the object (N),
-    /// its point (world, m) and its torque about `origin`
-    /// (`(point − origin) × force`, N·m), per sample, in sample order. The
-    /// torques are taken four at a time, with `glam`'s bits.
+    /// Calls `f` with the last spread contact's samples four at a time, in
+    /// sample order: their forces on the object (N), their points (world,
+    /// m), their torques about `origin` (`(point − origin) × force`, N·m,
+    /// with `glam`'s bits in each lane) and how many lanes hold samples.
     #[inline]
-    pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(Vec3, Vec3, Vec3)) {
+    pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(&Chunk, &Chunk, &Chunk, usize)) {
         let origin = lanes::splat(origin);
         let chunks = self.forces.chunks().iter().zip(self.points.chunks());
         for (j, (force, point)) in chunks.enumerate() {
             let torque = lanes::cross(lanes::sub(*point, origin), *force);
-            for k in 0..self.forces.used(j) {
-                f(lanes::lane(force, k), lanes::lane(point, k), lanes::lane(&torque, k));
-            }
+            f(force, point, &torque, self.forces.used(j));
         }
     }
 }

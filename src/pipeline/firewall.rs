@@ -8,7 +8,7 @@
 //! | objects: shape, pose, mass, material, γ | [`object`] | `add_object`, `add_scene` |
 //! | hand poses, the source of every contact | [`pose`] | `set_hand_pose` |
 //! | an object put at a new pose | [`placement`] | `place_object` |
-//! | the hand forces rapier integrates | [`force`] | stage 6, `apply_forces` |
+//! | the hand forces rapier integrates | [`forces`] | stage 6, `apply_forces` |
 //! | a grabbed object's pose, velocities | [`kinematic_target`], [`velocities`] | stage 7, grab |
 //!
 //! A rejected call is an error naming the field and leaves the world as it
@@ -19,11 +19,13 @@
 
 use super::config::InteractionConfig;
 use super::world::{InteractionWorld, WorldError};
+use crate::contact::lanes::Chunk;
 use crate::friction;
 use crate::hand::HandPose;
 use crate::scene::{GammaMode, ObjectDesc, ObjectError, StaticDesc};
 use glam::Vec3;
 use rapier3d::parry::shape::SharedShape;
+use wide::f32x4;
 
 /// The config, before a world is made from it.
 pub(super) fn config(config: &InteractionConfig) -> Result<(), WorldError> {
@@ -85,10 +87,15 @@ pub(super) fn placement(
     Ok(rotation.normalize())
 }
 
-/// Whether a sample's `(force, point)` may reach rapier: only finite ones.
+/// Which of four samples' `(force, point)` may reach rapier, as a bitmask
+/// of lanes: only finite ones (`x·0` is exactly 0 for a finite `x`, and
+/// NaN for any other, so one sum of them tests all six components).
 #[inline]
-pub(super) fn force(f: Vec3, at: Vec3) -> bool {
-    f.is_finite() && at.is_finite()
+pub(super) fn forces(force: &Chunk, point: &Chunk) -> u32 {
+    let zero = f32x4::ZERO;
+    let [fx, fy, fz] = force.map(|c| c * zero);
+    let [px, py, pz] = point.map(|c| c * zero);
+    ((((fx + fy) + fz) + ((px + py) + pz)).simd_eq(zero)).to_bitmask()
 }
 
 /// A kinematically carried object's next pose, if finite.
@@ -149,14 +156,22 @@ mod tests {
 
     #[test]
     fn only_finite_forces_pass() {
-        let ok = (Vec3::new(0.0, 1.5, 0.0), Vec3::ZERO);
+        use crate::contact::lanes::Vec3Lanes;
+        let lanes = |pairs: [(Vec3, Vec3); 4]| {
+            let on_object = Vec3Lanes::from_items(pairs.map(|p| p.0));
+            let at = Vec3Lanes::from_items(pairs.map(|p| p.1));
+            forces(&on_object.chunks()[0], &at.chunks()[0])
+        };
+        let big = Vec3::new(f32::MAX, -f32::MAX, 3.5e-41);
         let pairs = [
-            ok,
+            (big, Vec3::new(0.0, -0.0, 1.5)),
             (Vec3::new(f32::NAN, 0.0, 0.0), Vec3::ZERO),
             (Vec3::X, Vec3::new(0.0, f32::INFINITY, 0.0)),
+            (Vec3::new(0.2, 0.1, f32::NEG_INFINITY), Vec3::Y),
         ];
-        let passed: Vec<_> = pairs.into_iter().filter(|&(f, at)| force(f, at)).collect();
-        assert_eq!(passed, vec![ok]);
+        assert_eq!(lanes(pairs), 0b0001);
+        let [a, b, c, d] = pairs;
+        assert_eq!(lanes([b, a, (d.1, c.1), a]), 0b1010);
     }
 
     #[test]

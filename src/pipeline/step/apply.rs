@@ -1,18 +1,17 @@
 //! Stage 6: a contact's forces go to rapier.
 
 use super::update::Stage;
-use crate::friction;
+use crate::contact::lanes;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;
-use glam::Vec3;
 
 impl Stage<'_> {
     /// Applies the sample forces of the contact just updated (in
     /// `self.patch`) to its object, as rapier's `add_force_at_point` would
-    /// one by one, skipping any that is not finite, and adds them to the
-    /// object's total hand force ([`friction::total_force`]: the samples
-    /// of a contact share its force exactly, so their sum is the
-    /// contacts' sum).
+    /// one by one, skipping any that is not finite ([`firewall::forces`]),
+    /// and adds them to the object's total hand force
+    /// ([`crate::friction::total_force`]: the samples of a contact share
+    /// its force exactly, so their sum is the contacts' sum).
     ///
     /// The body's force and torque are summed here and written back once:
     /// the same sums, in the same order, as `add_force_at_point` per sample
@@ -28,15 +27,24 @@ impl Stage<'_> {
         let com = body.center_of_mass();
         let (mut force, mut torque) = (body.user_force(), body.user_torque());
         let (mut total, mut pushed) = (slot.hand_force, false);
-        self.patch.for_each_applied(com, |f, at, about_com| {
-            if !firewall::force(f, at) {
-                return;
-            }
-            total = friction::total_force(total, [f]);
-            if dynamic && f != Vec3::ZERO {
-                force += f;
-                torque += about_com;
-                pushed = true;
+        self.patch.for_each_applied(com, |forces, points, torques, used| {
+            // Bitmasks of lanes, four samples at once: those the firewall
+            // passes, and of them, those pushing a dynamic body.
+            let finite = firewall::forces(forces, points);
+            let pushing = if dynamic { finite & lanes::nonzero(forces) } else { 0 };
+            for k in 0..used {
+                if finite & (1 << k) == 0 {
+                    continue;
+                }
+                let f = lanes::lane(forces, k);
+                // Eq. 3.10 (`friction::total_force`) over the forces the
+                // firewall passed: only finite ones are summed.
+                total += f;
+                if pushing & (1 << k) != 0 {
+                    force += f;
+                    torque += lanes::lane(torques, k);
+                    pushed = true;
+                }
             }
         });
         slot.hand_force = total;
