@@ -12,7 +12,8 @@
 //! What the padding lanes of the last chunk hold is unspecified (zeros in a
 //! new chunk, a buffer's earlier items in a reused one) and never read:
 //! [`Vec3Lanes::for_each`] and [`Vec3Lanes::sum`] stop at
-//! [`Vec3Lanes::len`], and [`Vec3Lanes::valid`] masks them out.
+//! [`Vec3Lanes::len`], [`Vec3Lanes::valid`] masks them out, and a caller
+//! given whole chunks is given [`Vec3Lanes::used`] with each.
 
 use glam::{Mat3, Vec3};
 use wide::f32x4;

@@ -8,8 +8,8 @@
 //! | objects: shape, pose, mass, material, γ | [`object`] | `add_object`, `add_scene` |
 //! | hand poses, the source of every contact | [`pose`] | `set_hand_pose` |
 //! | an object put at a new pose | [`placement`] | `place_object` |
-//! | the hand forces rapier integrates | [`forces`] | stage 6, `apply_forces` |
-//! | a grabbed object's pose, velocities | [`kinematic_target`], [`velocities`] | stage 7, grab |
+//! | the hand forces rapier integrates | [`forces`] | stage 7, `apply_forces` |
+//! | a grabbed object's pose, velocities | [`kinematic_target`], [`velocities`] | stage 8, grab |
 //!
 //! A rejected call is an error naming the field and leaves the world as it
 //! was; a force that is not finite (which finite poses and objects never

@@ -1,4 +1,4 @@
-//! Stage 4 of a step: the stability limit of each object's contact springs.
+//! Stage 5 of a step: the stability limit of each object's contact springs.
 //!
 //! Contact springs and dampers are explicit forces, integrated by rapier
 //! with symplectic Euler. A set of springs Σγ_i on a body (each contact's

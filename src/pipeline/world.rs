@@ -105,7 +105,7 @@ pub struct InteractionWorld {
     /// Objects whose contacts end at the next step ([`ObjectSlot::reseat`]).
     pub(super) reseating: Vec<u32>,
     /// Objects a grab baseline held after the last step, ascending: with
-    /// the touched ones, all that stage 7 (`step/grab.rs`) visits.
+    /// the touched ones, all that stage 8 (`step/grab.rs`) visits.
     pub(super) grabbed: Vec<u32>,
     /// Whether a program may have written to rapier ([`Self::physics_mut`])
     /// since the last step began: then every body's forces are cleared.

@@ -1,4 +1,4 @@
-//! Stage 6: a contact's forces go to rapier.
+//! Stage 7: a contact's forces go to rapier.
 
 use super::update::Stage;
 use crate::contact::lanes;

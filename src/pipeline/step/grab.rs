@@ -1,4 +1,4 @@
-//! Stage 7 of a step, for the grab baselines only
+//! Stage 8 of a step, for the grab baselines only
 //! ([`crate::InteractionConfig::grab`]): a qualifying grasp moves its
 //! object with the hand instead of friction ([`crate::grab`]). Friction
 //! hands skip it.

@@ -8,15 +8,17 @@
 //! 2. `keep.rs`: existing contacts are kept or end;
 //! 3. `find.rs`: new contacts begin, found by the collision driver among
 //!    the objects rapier's broad phase puts near each hand (`near.rs`);
-//! 4. `../stability.rs`: each object's stability limit on γ and damping;
-//! 5. `update.rs`: each contact evaluates the contact law;
-//! 6. `apply.rs`: its forces go to rapier, and are added to its object's
+//! 4. `share.rs`: how each contact presses, and its share of its virtual
+//!    finger's γ;
+//! 5. `../stability.rs`: each object's stability limit on γ and damping;
+//! 6. `update.rs`: each contact evaluates the contact law;
+//! 7. `apply.rs`: its forces go to rapier, and are added to its object's
 //!    total for [`crate::ObjectState::hand_force`].
 //!
-//! 7. `grab.rs`: for the grab baselines only, a qualifying grasp moves
+//! 8. `grab.rs`: for the grab baselines only, a qualifying grasp moves
 //!    its object with the hand.
 //!
-//! Stages 5 and 6 run contact by contact, in update order (`update.rs`).
+//! Stages 6 and 7 run contact by contact, in update order (`update.rs`).
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
 //! gravity, object–object contacts and integration.
@@ -115,7 +117,7 @@ impl InteractionWorld {
 
 /// Object `index`'s view ([`InteractionWorld::object_view`]), read from
 /// the world's parts: it borrows only the colliders (for its shape), so
-/// stage 6 keeps one while it writes the bodies' forces.
+/// stages 6 and 7 keep one while they write the bodies' forces.
 fn view_of<'c>(
     index: usize,
     objects: &[ObjectSlot],
@@ -201,7 +203,7 @@ pub(crate) struct StepScratch {
     pub(super) shares: Vec<f32>,
     /// The pressing contacts' indices, grouped by side key.
     pub(super) order: Vec<usize>,
-    /// The objects stage 7 visits: touched or held, ascending.
+    /// The objects stage 8 visits: touched or held, ascending.
     pub(super) grab_visits: Vec<u32>,
 }
 

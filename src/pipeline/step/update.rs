@@ -1,4 +1,4 @@
-//! Stages 5 and 6, contact by contact: a contact evaluates the contact
+//! Stages 6 and 7, contact by contact: a contact evaluates the contact
 //! law, and its forces go to rapier (`apply.rs`) while its patch is still
 //! in cache.
 
@@ -17,7 +17,7 @@ use rapier3d::prelude::{ColliderSet, RigidBodySet};
 impl InteractionWorld {
     /// Updates every contact and applies its forces: the kept ones in
     /// place, in their order, then the new ones. Ended contacts are
-    /// dropped; the rest stay sorted by [`super::contact_key`].
+    /// dropped; the rest are then sorted by [`super::contact_key`].
     pub(super) fn update_contacts(&mut self, step: &mut StepScratch) {
         let mut contacts = std::mem::take(&mut self.contacts);
         let mut found = std::mem::take(&mut step.found);
@@ -63,9 +63,10 @@ impl InteractionWorld {
     }
 }
 
-/// Stage 6's borrows of the world: what it reads (the colliders, for the
-/// objects' shapes) apart from what it writes (the bodies' forces, the
-/// events), so that one object's view serves its whole run of contacts.
+/// Stages 6 and 7's borrows of the world: what they read (the colliders,
+/// for the objects' shapes) apart from what they write (the bodies'
+/// forces, the events), so that one object's view serves a run of its
+/// contacts.
 pub(super) struct Stage<'w> {
     colliders: &'w ColliderSet,
     config: &'w InteractionConfig,
@@ -73,7 +74,7 @@ pub(super) struct Stage<'w> {
     /// virtual finger's γ (stage 4).
     presses: &'w [Press],
     shares: &'w [f32],
-    /// Per object, its stability limit (stage 4).
+    /// Per object, its stability limit (stage 5).
     limits: &'w [StabilityScale],
     settings: &'w LawSettings,
     detector: &'w Detector,
