@@ -130,11 +130,13 @@ impl TraceFile {
 
     /// The file, created at the first call.
     fn file(&mut self) -> std::io::Result<&mut std::io::BufWriter<std::fs::File>> {
-        if self.out.is_none() {
-            let file = std::fs::File::create(&self.path).map_err(|e| named(&self.path, e))?;
-            self.out = Some(std::io::BufWriter::new(file));
+        match &mut self.out {
+            Some(out) => Ok(out),
+            none => {
+                let file = std::fs::File::create(&self.path).map_err(|e| named(&self.path, e))?;
+                Ok(none.insert(std::io::BufWriter::new(file)))
+            }
         }
-        self.out.as_mut().ok_or_else(|| std::io::ErrorKind::NotFound.into())
     }
 }
 
