@@ -29,7 +29,9 @@ pub(crate) mod stability;
 pub mod step;
 pub mod world;
 
-pub use config::{ConfigError, HAPTIC_STEP, InteractionConfig, ObjectFriction, SPECULATIVE_SPEED};
+pub use config::{
+    ConfigError, HAND_SUBSTEPS, HAPTIC_STEP, InteractionConfig, ObjectFriction, SPECULATIVE_SPEED,
+};
 pub use method::Method;
 pub use record::{Call, Recorder};
 pub use world::{InteractionWorld, ObjectState, WorldError};

@@ -1,15 +1,19 @@
 //! Stage 5 of a step: the stability limit of each object's contact springs.
 //!
-//! Contact springs and dampers are explicit forces, integrated by rapier
-//! with symplectic Euler. A set of springs Σγ_i on a body (each contact's
-//! share of its virtual finger's γ) is stable while
-//! `dt²·Σ γ_i w_i` stays well below 4, where `w_i = 1/m + |r_i|²/I_min`
-//! bounds how much the contact point at lever arm `r_i` accelerates per
-//! newton (linear plus rotational). The dampers need `dt·Σ c_i w_i < 2`.
-//! Both sums are kept ≤ 1; a light object in a many-finger grasp gets a
-//! proportionally softer γ (it then needs deeper fingers for the same
-//! force: the friction threshold, a force ratio, is unchanged). This only
-//! binds for light objects in many-finger grasps, or for long steps.
+//! Contact springs and dampers are explicit forces: set once a step, and
+//! added by rapier substep by substep, so over a step of N substeps (the
+//! at least [`super::config::HAND_SUBSTEPS`] for a pushed object) they move a body by
+//! `v·dt + (N+1)/(2N)·a·dt²`, symplectic Euler's `a·dt²` for N = 1. A set
+//! of springs Σγ_i on a body (each contact's share of its virtual finger's
+//! γ) is stable while `dt²·Σ γ_i w_i` stays well below 4, where
+//! `w_i = 1/m + |r_i|²/I_min` bounds how much the contact point at lever
+//! arm `r_i` accelerates per newton (linear plus rotational). The dampers
+//! need `dt·Σ c_i w_i < 2`. Both sums are kept ≤ 1: there, for N from 1 to
+//! 4 and damping ratios from 0.3, a spring and its damper on a body decay.
+//! A light object in a many-finger grasp gets a proportionally softer γ (it
+//! then needs deeper fingers for the same force: the friction threshold, a
+//! force ratio, is unchanged). This only binds for light objects in
+//! many-finger grasps, or for long steps.
 
 use super::config::InteractionConfig;
 use super::step::StepScratch;

@@ -174,6 +174,8 @@ impl InteractionWorld {
     /// bypass the friction model), and do not remove the bodies or colliders
     /// of objects added with [`Self::add_object`]: the world indexes them.
     /// What is written here bypasses the NaN firewall (`firewall.rs`).
+    /// rapier's substeps are set from the config before each step
+    /// ([`InteractionConfig::engine_substeps`]), so set them there.
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
         self.external = true;
         &mut self.physics

@@ -26,6 +26,10 @@ fn every_config_field_is_checked_by_name_with_its_value() {
     names(config_error(|c| c.dt = 0.5), &["config: dt: ", "got 0.5"]);
     names(config_error(|c| c.dt = f32::NAN), &["config: dt: ", "got NaN"]);
     names(config_error(|c| c.contact_frequency = -1.0), &["contact_frequency: ", "Hz, got -1"]);
+    for substeps in [0, 65] {
+        let e = config_error(|c| c.engine_substeps = substeps);
+        names(e, &["config: engine_substeps: ", "1..=64", &format!("got {substeps}")]);
+    }
     names(config_error(|c| c.gravity.y = f32::INFINITY), &["config: gravity: ", "inf"]);
     names(config_error(|c| c.contact_offset = 0.0), &["config: contact_offset: ", "got 0"]);
     let release = config_error(|c| c.release_offset = 0.001);

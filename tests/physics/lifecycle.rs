@@ -227,3 +227,56 @@ fn a_released_fixture_with_reseated_contacts_is_not_dragged_by_the_sweep_behind_
         reseated * 1e3
     );
 }
+
+#[test]
+fn what_a_hand_pushes_runs_rapiers_four_substeps_whatever_the_rest_runs() {
+    use coulomb_hands::pipeline::HAND_SUBSTEPS;
+    // rapier's own substeps, then those a body adds to them, on top.
+    let substeps = |w: &InteractionWorld, id: ObjectId| {
+        let physics = w.physics();
+        let body = &physics.bodies[w.object_body(id).unwrap()];
+        physics.integration_parameters.num_solver_iterations + body.additional_solver_iterations()
+    };
+    // The default (4 for every body), fewer and more for the rest.
+    for engine in [HAND_SUBSTEPS, 2, 1, 6] {
+        let config = InteractionConfig { engine_substeps: engine, ..InteractionConfig::default() };
+        let mut world = InteractionWorld::new(config).unwrap();
+        world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+        let size = Vec3::splat(0.05);
+        let pressed = ObjectDesc::cuboid("pressed", size, 0.1, Vec3::new(0.0, 0.025, 0.0));
+        let pressed = world.add_object(&pressed).unwrap();
+        let aside = ObjectDesc::cuboid("aside", size, 0.1, Vec3::new(0.3, 0.025, 0.0));
+        let aside = world.add_object(&aside).unwrap();
+        let hand = world.add_hand(Side::Right);
+        // 1.5 mm into the top of one box for 0.3 s, then 2 cm above it,
+        // while the other box, awake, rests on the ground.
+        let gap = |t: f32| if t < 0.3 { -0.0015 } else { 0.02 };
+        let (mut while_pressed, mut after) = (Vec::new(), Vec::new());
+        run(
+            &mut world,
+            hand,
+            0.4,
+            |t| finger_above(gap(t)),
+            |w, t| {
+                let pushed = w.contacts().iter().any(|c| c.force.length() > 0.1);
+                let awake = !w.object_state(aside).unwrap().sleeping;
+                let now = (substeps(w, pressed), substeps(w, aside));
+                match t {
+                    t if (0.1..0.29).contains(&t) => while_pressed.push((pushed, awake, now)),
+                    t if t > 0.35 => after.push((pushed, awake, now)),
+                    _ => {}
+                }
+            },
+        );
+        let hands = engine.max(HAND_SUBSTEPS);
+        assert!(!while_pressed.is_empty() && !after.is_empty());
+        for (pushed, awake, now) in while_pressed {
+            assert!(pushed && awake, "engine {engine}: the finger presses, the other box is awake");
+            assert_eq!(now, (hands, engine), "engine {engine}: pressed and aside");
+        }
+        for (pushed, _, now) in after {
+            assert!(!pushed, "engine {engine}: the finger has left");
+            assert_eq!(now, (engine, engine), "engine {engine}: both run the engine's");
+        }
+    }
+}

@@ -14,9 +14,15 @@ impl InteractionWorld {
     /// would make both this stage and rapier's step grow with the scene.
     /// After [`Self::physics_mut`], which may have added forces anywhere,
     /// every body that carries a force or torque is cleared.
+    ///
+    /// The objects pushed last step also go back to rapier's own substeps:
+    /// `set_substeps` raises them again for those the hands push this step.
     pub(super) fn clear_forces(&mut self) {
         if std::mem::take(&mut self.external) {
             for slot in self.objects.iter_mut() {
+                if slot.forced {
+                    self.physics.bodies[slot.body].set_additional_solver_iterations(0);
+                }
                 let body = &self.physics.bodies[slot.body];
                 let loaded = body.user_force() != Vec3::ZERO || body.user_torque() != Vec3::ZERO;
                 if loaded && let Some(body) = self.physics.bodies.get_mut(slot.body) {
@@ -34,6 +40,7 @@ impl InteractionWorld {
             let body = &mut self.physics.bodies[slot.body];
             body.reset_forces(false);
             body.reset_torques(false);
+            body.set_additional_solver_iterations(0);
             slot.hand_force = Vec3::ZERO;
             slot.forced = false;
         }

@@ -21,7 +21,8 @@
 //! Stages 6 and 7 run contact by contact, in update order (`update.rs`).
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
-//! gravity, object–object contacts and integration.
+//! gravity, object–object contacts and integration, with as many substeps
+//! as `substeps.rs` chooses for what the hands push and for the rest.
 
 mod apply;
 mod clear;
@@ -30,6 +31,7 @@ mod grab;
 mod keep;
 pub(super) mod near;
 mod share;
+mod substeps;
 mod update;
 
 pub(crate) use grab::GrabSlot;
@@ -81,6 +83,7 @@ impl InteractionWorld {
     /// bone velocities.
     pub fn step_physics(&mut self) {
         self.record(|| Call::Step);
+        self.set_substeps();
         self.physics.step();
         // rapier's broad phase has now seen every object where it was.
         self.unindexed.clear();

@@ -26,7 +26,7 @@ pub(crate) fn object_tag(id: ObjectId) -> u128 {
 }
 
 /// The object a `user_data` tags, if it is one of the world's.
-fn tagged(user_data: u128, objects: usize) -> Option<usize> {
+pub(super) fn tagged(user_data: u128, objects: usize) -> Option<usize> {
     let index = usize::try_from(user_data.checked_sub(1)?).ok()?;
     (index < objects).then_some(index)
 }

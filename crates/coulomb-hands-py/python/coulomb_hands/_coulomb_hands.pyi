@@ -114,6 +114,7 @@ class Config:
     probe_offset: float
     contact_frequency: float
     object_friction: str
+    engine_substeps: int
     deviation_springs: bool
     slip_recentre: bool
     stability_limit: bool
