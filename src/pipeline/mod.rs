@@ -30,7 +30,8 @@ pub mod step;
 pub mod world;
 
 pub use config::{
-    ConfigError, HAND_SUBSTEPS, HAPTIC_STEP, InteractionConfig, ObjectFriction, SPECULATIVE_SPEED,
+    ConfigError, ENGINE_SUBSTEPS, HAND_SUBSTEPS, HAPTIC_STEP, InteractionConfig, ObjectFriction,
+    SPECULATIVE_SPEED,
 };
 pub use method::Method;
 pub use record::{Call, Recorder};

@@ -72,6 +72,9 @@ pub(super) struct ObjectSlot {
     pub reseat: bool,
     /// Whether it is in [`InteractionWorld::forced`].
     pub forced: bool,
+    /// The substeps `set_substeps` added to its body this step, to be given
+    /// back in stage 1.
+    pub raised: Option<super::step::Raised>,
     /// Its grab, for the grab baselines.
     pub grab: super::step::GrabSlot,
 }
@@ -175,7 +178,9 @@ impl InteractionWorld {
     /// of objects added with [`Self::add_object`]: the world indexes them.
     /// What is written here bypasses the NaN firewall (`firewall.rs`).
     /// rapier's substeps are set from the config before each step
-    /// ([`InteractionConfig::engine_substeps`]), so set them there.
+    /// ([`InteractionConfig::engine_substeps`]), so set them there; a
+    /// body's own `additional_solver_iterations` are kept (an object the
+    /// hands push runs at least [`super::HAND_SUBSTEPS`] for that step).
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
         self.external = true;
         &mut self.physics
@@ -238,6 +243,7 @@ impl InteractionWorld {
             hand_force: Vec3::ZERO,
             reseat: false,
             forced: false,
+            raised: None,
             grab: Default::default(),
         });
         self.record(|| Call::AddObject(desc.clone()));

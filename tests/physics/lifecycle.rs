@@ -1,6 +1,7 @@
 //! When contacts begin and end, and what they do in between.
 
 use super::*;
+use coulomb_hands::pipeline::{ENGINE_SUBSTEPS, HAND_SUBSTEPS};
 use coulomb_hands::{
     ContactEventKind, Finger, FrictionState, InteractionConfig, ObjectDesc, Phalanx, StaticDesc,
 };
@@ -228,25 +229,32 @@ fn a_released_fixture_with_reseated_contacts_is_not_dragged_by_the_sweep_behind_
     );
 }
 
+/// rapier's own substeps, then those a body adds to them, on top.
+fn substeps(w: &InteractionWorld, id: ObjectId) -> usize {
+    let physics = w.physics();
+    let body = &physics.bodies[w.object_body(id).unwrap()];
+    physics.integration_parameters.num_solver_iterations + body.additional_solver_iterations()
+}
+
+/// A world with `engine_substeps` of `engine`, on the ground: a 5 cm box for
+/// a finger to press, and one 30 cm aside.
+fn two_boxes(engine: usize) -> (InteractionWorld, ObjectId, ObjectId) {
+    let config = InteractionConfig { engine_substeps: engine, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).unwrap();
+    world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
+    let size = Vec3::splat(0.05);
+    let pressed = ObjectDesc::cuboid("pressed", size, 0.1, Vec3::new(0.0, 0.025, 0.0));
+    let pressed = world.add_object(&pressed).unwrap();
+    let aside = ObjectDesc::cuboid("aside", size, 0.1, Vec3::new(0.3, 0.025, 0.0));
+    let aside = world.add_object(&aside).unwrap();
+    (world, pressed, aside)
+}
+
 #[test]
 fn what_a_hand_pushes_runs_rapiers_four_substeps_whatever_the_rest_runs() {
-    use coulomb_hands::pipeline::HAND_SUBSTEPS;
-    // rapier's own substeps, then those a body adds to them, on top.
-    let substeps = |w: &InteractionWorld, id: ObjectId| {
-        let physics = w.physics();
-        let body = &physics.bodies[w.object_body(id).unwrap()];
-        physics.integration_parameters.num_solver_iterations + body.additional_solver_iterations()
-    };
-    // The default (4 for every body), fewer and more for the rest.
-    for engine in [HAND_SUBSTEPS, 2, 1, 6] {
-        let config = InteractionConfig { engine_substeps: engine, ..InteractionConfig::default() };
-        let mut world = InteractionWorld::new(config).unwrap();
-        world.add_static(&StaticDesc::ground(0.0, 0.5)).unwrap();
-        let size = Vec3::splat(0.05);
-        let pressed = ObjectDesc::cuboid("pressed", size, 0.1, Vec3::new(0.0, 0.025, 0.0));
-        let pressed = world.add_object(&pressed).unwrap();
-        let aside = ObjectDesc::cuboid("aside", size, 0.1, Vec3::new(0.3, 0.025, 0.0));
-        let aside = world.add_object(&aside).unwrap();
+    // rapier's own 4 for every body, the default, fewer and more for the rest.
+    for engine in [HAND_SUBSTEPS, ENGINE_SUBSTEPS, 1, 6] {
+        let (mut world, pressed, aside) = two_boxes(engine);
         let hand = world.add_hand(Side::Right);
         // 1.5 mm into the top of one box for 0.3 s, then 2 cm above it,
         // while the other box, awake, rests on the ground.
@@ -278,5 +286,45 @@ fn what_a_hand_pushes_runs_rapiers_four_substeps_whatever_the_rest_runs() {
             assert!(!pushed, "engine {engine}: the finger has left");
             assert_eq!(now, (engine, engine), "engine {engine}: both run the engine's");
         }
+    }
+}
+
+/// A program's own per-body substeps (through `physics_mut`) stand: a box
+/// the finger presses runs at least 4 while pressed and its own after; one
+/// with more of its own keeps them; one the program changes while pressed
+/// keeps the program's.
+#[test]
+fn a_programs_own_substeps_stand_under_the_hands() {
+    let engine = 2;
+    for (own, changed) in [(1, None), (3, None), (1, Some(7))] {
+        let (mut world, pressed, aside) = two_boxes(engine);
+        for (id, n) in [(pressed, own), (aside, 5)] {
+            let body = world.object_body(id).unwrap();
+            world.physics_mut().bodies[body].set_additional_solver_iterations(n);
+        }
+        let hand = world.add_hand(Side::Right);
+        let step = |world: &mut InteractionWorld, gap: f32, steps: usize| {
+            for _ in 0..steps {
+                world.set_hand_pose(hand, &finger_above(gap)).unwrap();
+                world.step();
+            }
+        };
+        // Pressed 1.5 mm for 0.2 s: the box runs at least 4.
+        step(&mut world, -0.0015, 200);
+        assert!(world.object_state(pressed).unwrap().hand_force.length() > 0.1, "pressed");
+        assert!(!world.object_state(aside).unwrap().sleeping, "the box aside is awake");
+        let most = |n: usize| engine + n.max(HAND_SUBSTEPS - engine);
+        assert_eq!(substeps(&world, pressed), most(own), "own {own}: while pressed");
+        assert_eq!(substeps(&world, aside), engine + 5, "own {own}: the box aside");
+        if let Some(n) = changed {
+            let body = world.object_body(pressed).unwrap();
+            world.physics_mut().bodies[body].set_additional_solver_iterations(n);
+        }
+        // 2 cm above it for 0.1 s: its own, or the program's since.
+        step(&mut world, 0.02, 100);
+        assert_eq!(world.object_state(pressed).unwrap().hand_force, Vec3::ZERO, "let go");
+        let after = engine + changed.unwrap_or(own);
+        assert_eq!(substeps(&world, pressed), after, "own {own}, then {changed:?}: after");
+        assert_eq!(substeps(&world, aside), engine + 5, "own {own}: the box aside, after");
     }
 }

@@ -15,13 +15,14 @@ impl InteractionWorld {
     /// After [`Self::physics_mut`], which may have added forces anywhere,
     /// every body that carries a force or torque is cleared.
     ///
-    /// The objects pushed last step also go back to rapier's own substeps:
-    /// `set_substeps` raises them again for those the hands push this step.
+    /// The objects pushed last step also get their own substeps back
+    /// (`substeps.rs`): `set_substeps` raises them again for those the hands
+    /// push this step.
     pub(super) fn clear_forces(&mut self) {
         if std::mem::take(&mut self.external) {
             for slot in self.objects.iter_mut() {
-                if slot.forced {
-                    self.physics.bodies[slot.body].set_additional_solver_iterations(0);
+                if let Some(raised) = slot.raised.take() {
+                    raised.restore(&mut self.physics.bodies[slot.body]);
                 }
                 let body = &self.physics.bodies[slot.body];
                 let loaded = body.user_force() != Vec3::ZERO || body.user_torque() != Vec3::ZERO;
@@ -40,7 +41,9 @@ impl InteractionWorld {
             let body = &mut self.physics.bodies[slot.body];
             body.reset_forces(false);
             body.reset_torques(false);
-            body.set_additional_solver_iterations(0);
+            if let Some(raised) = slot.raised.take() {
+                raised.restore(body);
+            }
             slot.hand_force = Vec3::ZERO;
             slot.forced = false;
         }

@@ -35,6 +35,7 @@ mod substeps;
 mod update;
 
 pub(crate) use grab::GrabSlot;
+pub(crate) use substeps::Raised;
 
 use super::config::InteractionConfig;
 use super::record::Call;

@@ -76,8 +76,7 @@ pub fn hand(app: &App) -> &MouseHand {
 }
 
 pub fn cube(app: &App) -> glam::Vec3 {
-    let world = app.world().resource::<HandPhysics>();
-    world.world().object_state(CUBE).expect("the cube").position
+    cube_state(app).position
 }
 
 /// The middle fingertip's end (world, m).
@@ -117,8 +116,12 @@ fn keys_move_turn_and_curl_the_hand_at_their_rates() {
 
 /// Lowered behind the cube with the fingers almost straight, the hand is
 /// moved forward 12 cm: its fingertips push the cube along the table
-/// without lifting it. From the geometry: the tips travel 12 cm, less
-/// the gap to the cube, less the contacts' spring lag (μ·m·g/γ ≈ 0.6 mm).
+/// without lifting it, and leave it just ahead of them.
+///
+/// The middle fingertip reaches the cube first, 9 mm off its centre, so the
+/// cube turns (about 20°) and slides in fits and starts as the fingers
+/// catch it. Where its centre ends depends on that turn, so the test asks
+/// where the cube ends against the fingertips, from the geometry.
 #[test]
 fn the_hand_pushes_the_cube_along_the_table() {
     let mut app = desk();
@@ -128,20 +131,60 @@ fn the_hand_pushes_the_cube_along_the_table() {
     hold_while(&mut app, &[KeyCode::KeyS], 2.0, |a| fingertip(a).z > behind);
     // Down until the palm is 3 cm above the table.
     hold_while(&mut app, &[KeyCode::KeyQ], 2.0, |a| hand(a).palm.y > 0.03);
-    // The gap from the fingertip's skin (its axis end plus its radius).
-    let skin = fingertip(&app).z + hand(&app).sample().pose.fingers[2][2].radius;
-    let gap = before.z - CUBE_HALF - skin;
+    let gap = skin_gap(&app);
     assert!(gap > 0.0, "the fingertips start behind the cube: {gap}");
-    hold(&mut app, &[KeyCode::KeyW], 1.0);
-    hold(&mut app, &[], 0.5);
+    let start = fingertip(&app);
+    // Forward for a second, then still for half a second, watching how fast the cube goes.
+    let mut fastest = 0.0_f32;
+    let mut watch = |a: &App| {
+        fastest = fastest.max(cube_state(a).linvel.length());
+        true
+    };
+    hold_while(&mut app, &[KeyCode::KeyW], 1.0, &mut watch);
+    hold_while(&mut app, &[], 0.5, &mut watch);
     let pushed = cube(&app) - before;
-    // The tips' travel past the face, less the springs' lag (μ·m·g/γ, 0.6
-    // mm) and plus the cube's coast after the hand stops (v²/2μg, 1.5 mm).
-    let expected = 0.12 - gap;
-    let (lag, coast) = (0.5 * 0.05 * 9.81 / 400.0, 0.12 * 0.12 / (2.0 * 0.5 * 9.81));
-    let range = expected - lag - 0.005..expected + coast + 0.003;
-    assert!(range.contains(&pushed.z), "pushed {pushed}, expected {range:?}");
     assert!(pushed.y.abs() < 0.003, "it slid, not lifted: {pushed}");
+    // It went with the tips, past the gap, to within a centimetre: turned by
+    // θ, a cube's centre is up to h·(1 − cos θ + sin θ) nearer the face's
+    // pushed point, about 9 mm at 23°.
+    let travel = fingertip(&app).z - start.z;
+    assert!(
+        pushed.z > travel - gap - 0.01,
+        "pushed {pushed} by tips {travel} m past a {gap} m gap"
+    );
+    assert!(cube(&app).z > fingertip(&app).z, "ahead of the fingertips, not under them");
+    // It ends against the fingertips, pressed in by at most the springs'
+    // lag (μ·m·g/γ, 0.6 mm; plus a millimetre), or ahead of them by at most
+    // how far its fastest speed coasts on the table (v²/2μg, μ = 0.5).
+    let lag = 0.5 * 0.05 * 9.81 / 400.0;
+    let coast = fastest * fastest / (2.0 * 0.5 * 9.81);
+    let ahead = skin_gap(&app);
+    let range = -lag - 0.001..coast + 0.001;
+    assert!(range.contains(&ahead), "{ahead} m ahead, fastest {fastest} m/s: {range:?}");
+}
+
+/// The cube's pose and velocities.
+fn cube_state(app: &App) -> coulomb_hands::pipeline::ObjectState {
+    let world = app.world().resource::<HandPhysics>();
+    world.world().object_state(CUBE).expect("the cube")
+}
+
+/// The signed gap from the nearest fingertip's skin (of the four fingers) to the
+/// cube's surface (m; negative when pressed in), from its pose.
+fn skin_gap(app: &App) -> f32 {
+    use rapier3d::math::Pose;
+    use rapier3d::parry::query;
+    use rapier3d::parry::shape::{Cuboid, Segment};
+    let state = cube_state(app);
+    let pose = Pose::from_parts(state.position, state.rotation);
+    let shape = Cuboid::new(glam::Vec3::splat(CUBE_HALF));
+    let gap = |f: usize| {
+        let bone = hand(app).sample().pose.fingers[f][2];
+        let axis = Segment::new(bone.a, bone.b);
+        let hit = query::contact(&Pose::identity(), &axis, &pose, &shape, 1.0);
+        hit.expect("a segment and a box").expect("within a metre").dist - bone.radius
+    };
+    (1..5).map(gap).fold(f32::INFINITY, f32::min)
 }
 
 /// The thesis's precision grasp by hand: the palm over the cube, the thumb
