@@ -115,7 +115,8 @@ pub struct InteractionConfig {
     /// default, 2, takes a fifth off rapier's step on an awake tower, and
     /// every scenario, recording verdict, held box and standing tower keeps
     /// its outcome (the book's "Benchmarks"); 4 is rapier's own for every
-    /// body.
+    /// body, which a program with joints or long chains of its own may
+    /// want.
     pub engine_substeps: usize,
     /// The patch's deviation springs against twisting and rocking
     /// (default); off, each sample carries `f/N`, as in the thesis.

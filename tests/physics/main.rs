@@ -23,6 +23,7 @@ mod recordings;
 mod release;
 mod safety;
 mod scenarios;
+mod stacks;
 mod throw;
 mod tilt;
 mod trackers;
