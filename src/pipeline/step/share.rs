@@ -62,9 +62,10 @@ fn share_by_side(keys: &[SideKey], presses: &[Press], order: &mut Vec<usize>, sh
     let pressing = |i: usize| Some(presses[i]).filter(|p| p.seen > 0.0);
     order.clear();
     order.extend((0..keys.len()).filter(|&i| pressing(i).is_some()));
-    // Stable, so equal keys keep the contacts' own order: the same sums in
-    // the same order every run.
-    order.sort_by_key(|&i| key(i));
+    // By key, then by index: equal keys keep the contacts' own order (the
+    // same sums in the same order every run), as a stable sort would keep
+    // them, without its scratch allocation.
+    order.sort_unstable_by_key(|&i| (key(i), i));
     for group in order.chunk_by(|&a, &b| key(a) == key(b)) {
         if group.len() < 2 {
             continue;

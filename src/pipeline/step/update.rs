@@ -58,7 +58,11 @@ impl InteractionWorld {
             }
         }
         step.found = found;
-        contacts.sort_by_key(super::contact_key);
+        // Kept contacts stay in order, so a step that found none is sorted
+        // already: checked, it skips the stable sort's scratch allocation.
+        if !contacts.is_sorted_by_key(super::contact_key) {
+            contacts.sort_by_key(super::contact_key);
+        }
         self.contacts = contacts;
     }
 }
