@@ -234,7 +234,7 @@ impl Anchor {
     }
 
     /// Where the anchors are this step.
-    #[inline]
+    #[inline(always)]
     pub fn site(&self, object: &ObjectView, motion: &BoneMotion) -> Site {
         let pose = &object.pose;
         let surface_n = (pose.rotation * self.n_local).normalize_or_zero();

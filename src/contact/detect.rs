@@ -60,30 +60,38 @@ impl Detector {
     /// tracked bones, as they are now) with its reach, and returns the
     /// whole hand's reach (world), the box to find objects near; `None`
     /// for no bones.
+    #[inline(always)]
     pub fn reach(&mut self, bones: impl Iterator<Item = (Bone, BoneShape)>) -> Option<Aabb> {
         self.reach.clear();
-        let grow = self.contact_offset;
-        self.reach.extend(bones.map(|(bone, now)| (bone, now, bone_aabb(&now).loosened(grow))));
-        self.reach.iter().map(|r| r.2).reduce(|a, b| a.merged(&b))
+        let mut hand: Option<Aabb> = None;
+        for (bone, now) in bones {
+            let reach = bone_aabb(&now).loosened(self.contact_offset);
+            hand = Some(hand.map_or(reach, |h| h.merged(&reach)));
+            self.reach.push((bone, now, reach));
+        }
+        hand
     }
 
     /// The new touches of the hand [`Self::reach`] started, through the
     /// rest of the filter chain. `near` holds the objects whose boxes meet
     /// the hand's reach, in index order, with their boxes; `view(o)` is
-    /// object `o` itself. `known(bone, o)` leaves out pairs that are in
-    /// contact already, before their exact query. `touch` is called for
-    /// every bone whose surface is within the contact offset of an object,
-    /// in bone order, then object order.
+    /// object `o` itself. `known[k]` has a bit (by [`Bone::index`]) for
+    /// each bone in contact with `near[k]` already: those pairs are left
+    /// out before their exact query. `touch` is called for every bone
+    /// whose surface is within the contact offset of an object, in bone
+    /// order, then object order.
+    #[inline(always)]
     pub fn new_touches<'v>(
         &self,
         near: &[(usize, Aabb)],
+        known: &[u16],
         view: impl Fn(usize) -> ObjectView<'v>,
-        known: impl Fn(Bone, usize) -> bool,
         mut touch: impl FnMut(Bone, &ObjectView<'v>, Proximity),
     ) {
         for (bone, now, reach) in &self.reach {
-            for &(o, bounds) in near {
-                if !reach.intersects(&bounds) || known(*bone, o) {
+            let bit = 1 << bone.index();
+            for (&(o, bounds), &known) in near.iter().zip(known) {
+                if !reach.intersects(&bounds) || known & bit != 0 {
                     continue;
                 }
                 let object = view(o);

@@ -47,13 +47,6 @@ impl Vec3Lanes {
         self.len
     }
 
-    /// Empties it, keeping its buffer.
-    #[inline]
-    pub fn clear(&mut self) {
-        self.chunks.clear();
-        self.len = 0;
-    }
-
     /// `len` items, in a buffer kept from call to call, to be written
     /// chunk by chunk: what they hold before is left unspecified (zeros in
     /// new chunks, the last call's items in kept ones).
@@ -96,6 +89,17 @@ impl Vec3Lanes {
         for (j, chunk) in self.chunks.iter().enumerate() {
             for k in 0..self.used(j) {
                 f(lane(chunk, k));
+            }
+        }
+    }
+
+    /// Sets `out` to the items, in order, reusing its buffer.
+    #[inline(always)]
+    pub fn copy_to(&self, out: &mut Vec<Vec3>) {
+        out.resize(self.len, Vec3::ZERO);
+        for (items, chunk) in out.chunks_mut(LANES).zip(&self.chunks) {
+            for (k, item) in items.iter_mut().enumerate() {
+                *item = lane(chunk, k);
             }
         }
     }
@@ -236,6 +240,12 @@ mod tests {
         assert_eq!(lanes.valid(0).to_bitmask(), 0b1111);
         assert_eq!(lanes.valid(1).to_bitmask(), 0b0001);
         assert_eq!(lanes.sum(), items().into_iter().sum::<Vec3>());
+        // Copied over a longer buffer and a shorter one alike.
+        for before in [vec![Vec3::ONE; 7], vec![Vec3::NEG_ONE; 2]] {
+            let mut out = before;
+            lanes.copy_to(&mut out);
+            assert_eq!(out, items());
+        }
     }
 
     #[test]

@@ -203,6 +203,7 @@ impl Contact {
     /// and the depth its spring sees under the penetration-speed limit and
     /// the force cap. Changes nothing: [`Self::update`] keeps the limited
     /// depth for the next step.
+    #[inline(always)]
     pub(crate) fn press(
         &self,
         object: &ObjectView,
@@ -240,6 +241,7 @@ impl Contact {
     /// that stays static never does: its bone point is pressed in below C,
     /// inside the friction cone. Returns `false` when the contact has ended.
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     pub(crate) fn update(
         &mut self,
         press: &Press,
@@ -315,6 +317,7 @@ impl Contact {
     /// The damped spring on the bone (N), at the depth the safeguards let
     /// the spring see ([`Press::seen`]), with the bone's speed into the
     /// object, relative to it, limited for the damper too.
+    #[inline(always)]
     fn reaction(press: &Press, object: &ObjectView, settings: &LawSettings) -> Vec3 {
         let at = &press.site;
         let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, press.seen);
@@ -328,6 +331,7 @@ impl Contact {
 
     /// Spreads this step's force over the skin patch (§3.5.4), at `site`
     /// if the anchors are still where it was found, else where they are.
+    #[inline(always)]
     fn spread(
         &mut self,
         site: Option<Site>,

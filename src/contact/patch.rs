@@ -262,22 +262,28 @@ pub(crate) struct PatchScratch {
     forces: Vec3Lanes,
     /// Its samples' points (world, m).
     points: Vec3Lanes,
+    /// Whether `forces` and `points` are the last contact's: cleared
+    /// without emptying the buffers, so the next patch of the same size
+    /// reuses them as they are.
+    applied: bool,
 }
 
 impl PatchScratch {
     /// Forgets the last contact's forces: a contact that applies none.
     #[inline]
     pub fn clear(&mut self) {
-        self.forces.clear();
-        self.points.clear();
+        self.applied = false;
     }
 
     /// Calls `f` with the last spread contact's samples four at a time, in
     /// sample order: their forces on the object (N), their points (world,
     /// m), their torques about `origin` (`(point − origin) × force`, N·m,
     /// with `glam`'s bits in each lane) and how many lanes hold samples.
-    #[inline]
+    #[inline(always)]
     pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(&Chunk, &Chunk, &Chunk, usize)) {
+        if !self.applied {
+            return;
+        }
         let origin = lanes::splat(origin);
         let chunks = self.forces.chunks().iter().zip(self.points.chunks());
         for (j, (force, point)) in chunks.enumerate() {
@@ -297,6 +303,7 @@ impl PatchScratch {
 ///
 /// Four samples at a time ([`super::lanes`]): the same arithmetic, in the
 /// same order, as one sample at a time, so the same bits.
+#[inline(always)]
 pub(crate) fn spread(
     step: &PatchStep,
     anchor: &mut Anchor,
@@ -321,10 +328,10 @@ pub(crate) fn spread(
         // The thesis's patch: each sample carries f/N where it lies.
         scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);
     }
-    points.clear();
-    points.extend(scratch.points.iter());
+    scratch.points.copy_to(points);
     lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);
     lane_push_only(&mut scratch.forces, step.normal);
+    scratch.applied = true;
 }
 
 /// Each sample's deviation `e_i` (m) from its skin point, relative to C:
@@ -333,6 +340,7 @@ pub(crate) fn spread(
 /// of its rate, folded in as extra stretch; normally, scaled to the
 /// [`Rocking`] spring. Samples that slip move their points in
 /// `scratch.points` and `samples.object`.
+#[inline(always)]
 fn deviate(
     step: &PatchStep,
     samples: &mut Samples,

@@ -46,6 +46,7 @@ impl InteractionWorld {
     /// Sets the stability limit of each object with a contact this step
     /// (`step.limits[o]`; the other objects' entries are stale and unread,
     /// so a step's cost does not grow with the scene).
+    #[inline(always)]
     pub(super) fn stability_limits(&mut self, step: &mut StepScratch) {
         let dt = self.config.dt;
         let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };

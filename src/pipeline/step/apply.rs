@@ -16,6 +16,7 @@ impl Stage<'_> {
     /// The body's force and torque are summed here and written back once:
     /// the same sums, in the same order, as `add_force_at_point` per sample
     /// (so the same bits), without its per-sample checks and wake-ups.
+    #[inline(always)]
     pub(super) fn apply_forces(&mut self, object: ObjectId) {
         let slot = &mut self.objects[object.0 as usize];
         if !slot.forced {

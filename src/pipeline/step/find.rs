@@ -1,6 +1,6 @@
 //! Stage 3: new contacts begin where bones come within the contact offset.
 
-use super::{Candidate, StepScratch, contact_key};
+use super::{Candidate, StepScratch};
 use crate::contact::Contact;
 use crate::hand::{Bone, HandId};
 use crate::pipeline::InteractionWorld;
@@ -14,6 +14,7 @@ impl InteractionWorld {
     /// rapier's broad phase puts near the hand (`near.rs`). C is placed by
     /// the thesis's ray towards the collider, under the bone's point
     /// nearest the object's centre.
+    #[inline(always)]
     pub(super) fn find_new_contacts(&mut self, step: &mut StepScratch) {
         let world = &*self;
         let settings = step.settings;
@@ -28,13 +29,13 @@ impl InteractionWorld {
             let Some(reach) = step.detector.reach(bones) else { continue };
             let margin = *margin.get_or_insert_with(|| world.motion_margin());
             world.objects_near(&reach, margin, &mut step.near);
-            let known = |bone: Bone, o: usize| {
-                let key = (ObjectId(o as u32), hand, bone.index());
-                kept.binary_search_by_key(&key, contact_key).is_ok()
-            };
-            let view = |o| world.object_view(o, StabilityScale::NONE);
             let near = &step.near.found;
-            step.detector.new_touches(near, view, known, |bone, object, prox| {
+            step.near.known.clear();
+            for &(o, _) in near {
+                step.near.known.push(known_bones(kept, o, hand));
+            }
+            let view = |o| world.object_view(o, StabilityScale::NONE);
+            step.detector.new_touches(near, &step.near.known, view, |bone, object, prox| {
                 let Some(motion) = world.motion(hand, bone) else { return };
                 let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
                 let proximity = Some(prox);
@@ -42,4 +43,14 @@ impl InteractionWorld {
             });
         }
     }
+}
+
+/// Which of `hand`'s bones touch object `o` already, a bit per
+/// [`Bone::index`]: `contacts` are sorted by [`super::contact_key`], so those
+/// contacts are one run, found by one binary search.
+fn known_bones(contacts: &[Contact], o: usize, hand: HandId) -> u16 {
+    let side = (ObjectId(o as u32), hand);
+    let start = contacts.partition_point(|c| (c.object, c.hand) < side);
+    let run = contacts[start..].iter().take_while(|c| (c.object, c.hand) == side);
+    run.fold(0, |known, c| known | 1 << c.bone.index())
 }

@@ -1,7 +1,7 @@
 //! Stage 2: existing contacts are kept, or end.
 
 use super::{Kept, StepScratch};
-use crate::contact::ContactEventKind;
+use crate::contact::{Contact, ContactEventKind};
 use crate::friction::FrictionState;
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::stability::StabilityScale;
@@ -12,11 +12,13 @@ impl InteractionWorld {
     /// pressed in below C, inside the cone. The others are kept only while
     /// the bone is within the release offset. A contact ends when its hand
     /// lost tracking or its object's contacts are re-seated.
+    #[inline(always)]
     pub(super) fn keep_contacts(&mut self, step: &mut StepScratch) {
         step.kept.clear();
-        // In place: a kept contact is not moved.
+        // In place, as `update_contacts` does: a kept contact is moved only
+        // to close a gap an ended one left.
         let mut contacts = std::mem::take(&mut self.contacts);
-        contacts.retain(|contact| {
+        let mut keep = |contact: &Contact| {
             let reseat = self.objects[contact.object.0 as usize].reseat;
             let motion = self.motion(contact.hand, contact.bone).filter(|_| !reseat);
             let Some(motion) = motion else {
@@ -35,7 +37,17 @@ impl InteractionWorld {
             };
             step.kept.push(Kept { proximity, motion });
             true
-        });
+        };
+        let mut live = 0;
+        for i in 0..contacts.len() {
+            if keep(&contacts[i]) {
+                if live != i {
+                    contacts.swap(live, i);
+                }
+                live += 1;
+            }
+        }
+        contacts.truncate(live);
         self.contacts = contacts;
         for o in self.reseating.drain(..) {
             self.objects[o as usize].reseat = false;

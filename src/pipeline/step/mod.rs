@@ -19,12 +19,16 @@
 //!    its object with the hand.
 //!
 //! Stages 6 and 7 run contact by contact, in update order (`update.rs`).
+//! Stages 2 to 7 are built twice, for the baseline and for AVX2
+//! (`avx2.rs`), with the same bits out.
 //!
 //! Its second half, [`InteractionWorld::step_physics`], is rapier's step:
 //! gravity, object–object contacts and integration, with as many substeps
 //! as `substeps.rs` chooses for what the hands push and for the rest.
 
 mod apply;
+#[cfg(target_arch = "x86_64")]
+mod avx2;
 mod clear;
 mod find;
 mod grab;
@@ -34,6 +38,8 @@ mod share;
 mod substeps;
 mod update;
 
+#[cfg(all(test, target_arch = "x86_64"))]
+pub(crate) use avx2::BASELINE_ONLY;
 pub(crate) use grab::GrabSlot;
 pub(crate) use substeps::Raised;
 
@@ -69,11 +75,7 @@ impl InteractionWorld {
         let mut step = std::mem::take(&mut self.scratch);
         self.events.clear();
         self.clear_forces();
-        self.keep_contacts(&mut step);
-        self.find_new_contacts(&mut step);
-        self.press_contacts(&mut step);
-        self.stability_limits(&mut step);
-        self.update_contacts(&mut step);
+        contact_stages(self, &mut step);
         self.scratch = step;
         self.grab_objects();
     }
@@ -96,6 +98,7 @@ impl InteractionWorld {
 
     /// The object as the contact law sees it this step, with its contact
     /// stiffness and damping scaled by the stability limit.
+    #[inline(always)]
     fn object_view(&self, index: usize, limit: StabilityScale) -> ObjectView<'_> {
         let physics = &self.physics;
         view_of(index, &self.objects, &physics.bodies, &physics.colliders, &self.config, limit)
@@ -119,9 +122,39 @@ impl InteractionWorld {
     }
 }
 
+/// Stages 2 to 7, the contacts' work, in the build the CPU runs best: on
+/// x86-64 with AVX2 (checked once, by `std`), the same code compiled for
+/// AVX2 (`avx2.rs`), else for the target's baseline. The same IEEE
+/// operations in either encoding and no fused multiply-add, so the same
+/// bits (`run/scenario/builds.rs`); AVX2's three-operand forms spare the register
+/// copies of the patch's lane arithmetic (−11 % of the layer's
+/// instructions).
+fn contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
+    #[cfg(target_arch = "x86_64")]
+    if avx2::enabled() {
+        // SAFETY: this CPU has AVX2, the one feature the build enables.
+        return unsafe { avx2::contact_stages(world, step) };
+    }
+    inlined_contact_stages(world, step);
+}
+
+/// Stages 2 to 7, inlined into each build of [`contact_stages`]: each
+/// stage, and what it calls of the contact law and the patch, is
+/// `#[inline(always)]`, since a function left out of line would keep the
+/// baseline encoding.
+#[inline(always)]
+fn inlined_contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
+    world.keep_contacts(step);
+    world.find_new_contacts(step);
+    world.press_contacts(step);
+    world.stability_limits(step);
+    world.update_contacts(step);
+}
+
 /// Object `index`'s view ([`InteractionWorld::object_view`]), read from
 /// the world's parts: it borrows only the colliders (for its shape), so
 /// stages 6 and 7 keep one while they write the bodies' forces.
+#[inline(always)]
 fn view_of<'c>(
     index: usize,
     objects: &[ObjectSlot],

@@ -39,6 +39,9 @@ pub(crate) struct Nearby {
     ids: Vec<usize>,
     /// The candidates whose box meets the hand's, in index order.
     pub found: Vec<(usize, Aabb)>,
+    /// Per object of `found`, the hand's bones touching it already, a bit
+    /// per [`crate::hand::Bone::index`] (`find.rs`).
+    pub known: Vec<u16>,
 }
 
 impl InteractionWorld {

@@ -2,7 +2,7 @@
 //! hand's virtual fingers ([`crate::friction::grip`]).
 
 use super::StepScratch;
-use crate::contact::{BoneMotion, Contact, ObjectView, Press};
+use crate::contact::{Contact, ObjectView, Press};
 use crate::friction;
 use crate::hand::HandId;
 use crate::pipeline::InteractionWorld;
@@ -15,6 +15,7 @@ impl InteractionWorld {
     /// one's factor on γ among the pressing contacts of its hand on its
     /// object ([`friction::virtual_finger_factor`]); without them, or for a
     /// contact that does not press, the factor is 1.
+    #[inline(always)]
     pub(super) fn press_contacts(&mut self, step: &mut StepScratch) {
         step.presses.clear();
         step.sides.clear();
@@ -22,22 +23,18 @@ impl InteractionWorld {
         // Each object's view once for its run of contacts (they are sorted
         // by object): the same view, looked up once.
         let mut view: Option<ObjectView> = None;
-        let mut press = |contact: &Contact, motion: &BoneMotion| {
-            let o = contact.object.0 as usize;
+        // Kept contacts' hands are tracked: `keep_contacts` ended the others.
+        let kept = self.contacts.iter().zip(step.kept.iter().map(|k| &k.motion));
+        let found = step.found.iter().map(|c| (&c.contact, &c.motion));
+        for (contact, motion) in kept.chain(found) {
             let object = match view {
                 Some(v) if v.id == contact.object => v,
-                _ => *view.insert(self.object_view(o, StabilityScale::NONE)),
+                _ => {
+                    *view.insert(self.object_view(contact.object.0 as usize, StabilityScale::NONE))
+                }
             };
-            contact.press(&object, motion, &settings)
-        };
-        // Kept contacts' hands are tracked: `keep_contacts` ended the others.
-        for (contact, kept) in self.contacts.iter().zip(&step.kept) {
-            step.presses.push(press(contact, &kept.motion));
+            step.presses.push(contact.press(&object, motion, &settings));
             step.sides.push(side_key(contact));
-        }
-        for candidate in step.found.iter() {
-            step.presses.push(press(&candidate.contact, &candidate.motion));
-            step.sides.push(side_key(&candidate.contact));
         }
         step.shares.clear();
         step.shares.resize(step.presses.len(), 1.0);
@@ -57,6 +54,7 @@ fn side_key(c: &Contact) -> SideKey {
 /// Each pressing contact's factor on γ: `shares[i]` for
 /// the contact of key `keys[i]` and press `presses[i]`. Contacts are
 /// grouped by key through `order`, a buffer kept between steps.
+#[inline(always)]
 fn share_by_side(keys: &[SideKey], presses: &[Press], order: &mut Vec<usize>, shares: &mut [f32]) {
     let key = |i: usize| keys[i];
     let pressing = |i: usize| Some(presses[i]).filter(|p| p.seen > 0.0);

@@ -18,6 +18,7 @@ impl InteractionWorld {
     /// Updates every contact and applies its forces: the kept ones in
     /// place, in their order, then the new ones. Ended contacts are
     /// dropped; the rest are then sorted by [`super::contact_key`].
+    #[inline(always)]
     pub(super) fn update_contacts(&mut self, step: &mut StepScratch) {
         let mut contacts = std::mem::take(&mut self.contacts);
         let mut found = std::mem::take(&mut step.found);
@@ -99,6 +100,7 @@ impl Stage<'_> {
     /// stability limit ([`Contact::update`]), and applies its forces. A
     /// contact that has ended gets its `Ended` event and `false`; a new
     /// one that lives gets its `Began` event.
+    #[inline(always)]
     fn update(
         &mut self,
         contact: &mut Contact,

@@ -43,6 +43,8 @@
 //! the run starts. The shipped scenarios are in `scenarios/` and built into
 //! the binary ([`shipped`]).
 
+#[cfg(all(test, target_arch = "x86_64"))]
+mod builds;
 pub mod check;
 pub mod flight;
 pub mod script;
