@@ -126,8 +126,8 @@ impl InteractionWorld {
 /// x86-64 with AVX2 (checked once, by `std`), the same code compiled for
 /// AVX2 (`avx2.rs`), else for the target's baseline. The same IEEE
 /// operations in either encoding and no fused multiply-add, so the same
-/// bits (`run/scenario/builds.rs`); AVX2's three-operand forms spare the register
-/// copies of the patch's lane arithmetic (−11 % of the layer's
+/// bits (`run/scenario/builds.rs`); AVX2's three-operand forms spare the
+/// register copies of the patch's lane arithmetic (−11 % of the layer's
 /// instructions).
 fn contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
     #[cfg(target_arch = "x86_64")]
