@@ -246,7 +246,7 @@ impl Contact {
         &mut self,
         press: &Press,
         proximity: Option<Proximity>,
-        detector: &Detector,
+        detector: &mut Detector,
         motion: &BoneMotion,
         object: &ObjectView,
         settings: &LawSettings,
@@ -272,7 +272,7 @@ impl Contact {
         self.normal_force = law.normal.length();
         self.force = law.on_object();
 
-        let touching = || proximity.or_else(|| detector.still_touching(&motion.now, object));
+        let mut touching = || proximity.or_else(|| detector.still_touching(&motion.now, object));
         match law.state {
             FrictionState::Separated if press.depth > 0.0 => {
                 // Still inside, but the damper says the surfaces part faster

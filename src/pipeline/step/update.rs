@@ -82,7 +82,7 @@ pub(super) struct Stage<'w> {
     /// Per object, its stability limit (stage 5).
     limits: &'w [StabilityScale],
     settings: &'w LawSettings,
-    detector: &'w Detector,
+    detector: &'w mut Detector,
     pub(super) objects: &'w mut [ObjectSlot],
     pub(super) bodies: &'w mut RigidBodySet,
     pub(super) forced: &'w mut Vec<u32>,
