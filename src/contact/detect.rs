@@ -18,7 +18,7 @@ use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d::parry::query::epa::EPA;
 use rapier3d::parry::query::gjk::{self, CsoPoint, GJKResult, VoronoiSimplex};
 use rapier3d::parry::query::{self, Contact, Unsupported};
-use rapier3d::parry::shape::{Ball, Cuboid, HalfSpace, Segment, Shape};
+use rapier3d::parry::shape::{Ball, Cuboid, HalfSpace, Segment, Shape, SupportMap};
 
 /// Closest-feature geometry between a bone and an object (world).
 #[derive(Debug, Clone, Copy)]
@@ -177,15 +177,9 @@ fn contact(
     g2: &dyn Shape,
     prediction: f32,
 ) -> Result<Option<Contact>, Unsupported> {
-    // The pairs parry's dispatcher sends elsewhere before support maps.
-    let special =
-        |g: &dyn Shape| g.as_shape::<Ball>().is_some() || g.as_shape::<HalfSpace>().is_some();
-    let (Some(s1), Some(s2)) = (g1.as_support_map(), g2.as_support_map()) else {
+    let (Some(s1), Some(s2)) = (general_support_map(g1), general_support_map(g2)) else {
         return query::contact(pos1, g1, pos2, g2, prediction);
     };
-    if special(g1) || special(g2) {
-        return query::contact(pos1, g1, pos2, g2, prediction);
-    }
     // parry's `contact` and `contact_support_map_support_map`.
     let pos12 = pos1.inv_mul(pos2);
     let dir = pos12.translation.try_normalize().unwrap_or(Vec3::X);
@@ -205,6 +199,13 @@ fn contact(
     let mut hit = Contact::new(point1, point2, normal1, normal2, dist);
     hit.transform_by_mut(pos1, pos2);
     Ok(Some(hit))
+}
+
+/// `g` as a support map, unless parry's dispatcher sends it elsewhere
+/// before support maps: a ball or a half-space.
+fn general_support_map(g: &dyn Shape) -> Option<&dyn SupportMap> {
+    let special = g.as_shape::<Ball>().is_some() || g.as_shape::<HalfSpace>().is_some();
+    g.as_support_map().filter(|_| !special)
 }
 
 /// A bone's bounding box (world).

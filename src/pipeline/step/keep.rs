@@ -16,7 +16,9 @@ impl InteractionWorld {
     pub(super) fn keep_contacts(&mut self, step: &mut StepScratch) {
         step.kept.clear();
         // In place, as `update_contacts` does: a kept contact is moved only
-        // to close a gap an ended one left.
+        // to close a gap an ended one left. Written out, not shared with it
+        // through a helper taking a closure: the closure is left out of
+        // line, in the baseline build (+13 % on the layer, measured).
         let mut contacts = std::mem::take(&mut self.contacts);
         let mut keep = |contact: &Contact| {
             let reseat = self.objects[contact.object.0 as usize].reseat;
