@@ -43,7 +43,7 @@ pub(crate) enum BoneAnchor {
 }
 
 /// Where a contact's anchors are this step (world).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Site {
     /// The contact point C on the object's surface (m).
     pub c: Vec3,
@@ -202,20 +202,20 @@ impl Anchor {
         object: &ObjectView,
         patch: &patch::PatchConfig,
     ) -> Anchor {
-        let site = site_under_bone(&motion.now, object, near);
+        let site = site_under_bone(&motion.now(), object, near);
         let (c, n) = (site.point, site.normal);
-        let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, c, n);
+        let bone_anchor = BoneAnchor::at(&motion.now(), motion.palm_now(), c, n);
         // A finger's pad is soft and round: pressed near an edge, it wraps
         // round it. The palm's wide flat ring must fit the face it is on.
         let (radius, planar) = match bone.skin_class() {
             SkinClass::Finger => (patch.finger_radius, false),
             SkinClass::Thumb => (patch.thumb_radius, false),
             SkinClass::Palm => {
-                let room = bone_anchor.room_on_face(&motion.palm_now, patch.palm_radius);
+                let room = bone_anchor.room_on_face(motion.palm_now(), patch.palm_radius);
                 patch::fit_to_face(object, c, n, patch.samples, room)
             }
         };
-        let rot_inv = bone_anchor.rotation(motion.now, &motion.palm_now).inverse();
+        let rot_inv = bone_anchor.rotation(motion.now(), motion.palm_now()).inverse();
         let samples = patch::Samples::from_pairs(
             patch::sample_offsets(n, patch.samples, radius).into_iter().map(|o| {
                 let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
@@ -238,13 +238,13 @@ impl Anchor {
     pub fn site(&self, object: &ObjectView, motion: &BoneMotion) -> Site {
         let pose = &object.pose;
         let surface_n = (pose.rotation * self.n_local).normalize_or_zero();
-        let n = self.bone.normal(&motion.palm_now, surface_n);
+        let n = self.bone.normal(motion.palm_now(), surface_n);
         Site {
             c: pose.transform_point(self.c_local),
             n,
             surface_n,
-            p: self.bone.point(motion.now, n),
-            p_prev: self.bone.point(motion.prev, n),
+            p: self.bone.point(motion.now(), n),
+            p_prev: self.bone.point(motion.prev(), n),
         }
     }
 
@@ -258,9 +258,9 @@ impl Anchor {
         let Slip { normal_force, kinetic, probe_offset, recentre } = *slip;
         let pose = &object.pose;
         let here = SurfacePoint { point: at.c, normal: at.surface_n };
-        let site = if recentre { site_under_bone(&motion.now, object, here) } else { here };
-        let bone_anchor = BoneAnchor::at(&motion.now, &motion.palm_now, site.point, site.normal);
-        let p_new = bone_anchor.point(motion.now, site.normal);
+        let site = if recentre { site_under_bone(&motion.now(), object, here) } else { here };
+        let bone_anchor = BoneAnchor::at(&motion.now(), motion.palm_now(), site.point, site.normal);
+        let p_new = bone_anchor.point(motion.now(), site.normal);
         // The kinetic stretch is kept from the point of the site's tangent
         // plane under the bone: the re-centred site, or, where none was
         // found (a bone crossing a curved face askew, or no re-centring),
@@ -286,8 +286,8 @@ impl Anchor {
         self.n_local = pose.rotation.inverse() * moved.normal;
         // The skin offsets live in the bone frame, which the new anchor
         // redefines: carry them over.
-        let carry = bone_anchor.rotation(motion.now, &motion.palm_now).inverse()
-            * self.bone.rotation(motion.now, &motion.palm_now);
+        let carry = bone_anchor.rotation(motion.now(), motion.palm_now()).inverse()
+            * self.bone.rotation(motion.now(), motion.palm_now());
         let samples = &mut self.samples;
         for i in 0..samples.len() {
             samples.skin.set(i, carry * samples.skin.get(i));

@@ -41,7 +41,7 @@ pub mod surface;
 pub use event::{ContactEvent, ContactEventKind};
 
 use crate::friction::{self, ForceCap, FrictionCoefficients, FrictionState, KineticFriction};
-use crate::hand::{Bone, BoneShape, HandId, Palm};
+use crate::hand::{Bone, BoneShape, HandId, HandPose, Palm};
 use crate::scene::ObjectId;
 use anchor::{Anchor, Site};
 use detect::{Detector, Proximity};
@@ -83,13 +83,41 @@ pub struct Contact {
     pub(crate) anchor: Anchor,
 }
 
-/// A bone as seen by one step: its shape now and one step ago.
+/// A bone as seen by one step: its hand's pose now and one step ago (the
+/// same pose on the hand's first tracked step). It borrows the poses, so
+/// each stage looks it up afresh: cheaper than carrying two shapes and two
+/// palms (224 bytes) from stage to stage.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct BoneMotion {
-    pub now: BoneShape,
-    pub prev: BoneShape,
-    pub palm_now: Palm,
-    pub palm_prev: Palm,
+pub(crate) struct BoneMotion<'h> {
+    pub bone: Bone,
+    pub pose: &'h HandPose,
+    pub prev_pose: &'h HandPose,
+}
+
+impl BoneMotion<'_> {
+    /// The bone's shape now.
+    #[inline(always)]
+    pub fn now(&self) -> BoneShape {
+        self.pose.bone(self.bone)
+    }
+
+    /// The bone's shape one step ago.
+    #[inline(always)]
+    pub fn prev(&self) -> BoneShape {
+        self.prev_pose.bone(self.bone)
+    }
+
+    /// The palm now, whose frame a finger's skin frame rolls with.
+    #[inline(always)]
+    pub fn palm_now(&self) -> &Palm {
+        &self.pose.palm
+    }
+
+    /// The palm one step ago.
+    #[inline(always)]
+    pub fn palm_prev(&self) -> &Palm {
+        &self.prev_pose.palm
+    }
 }
 
 /// The object as seen by one step.
@@ -149,7 +177,7 @@ pub(crate) struct LawSettings {
 /// are, and how deep its spring sees the bone. Found for every contact
 /// before any is updated, since contacts of one hand share γ by how deep
 /// each presses ([`crate::friction::grip`]).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Press {
     site: Site,
     /// How deep p is below C along n (m); negative while hovering.
@@ -230,7 +258,7 @@ impl Contact {
     /// Evaluates the contact law for this step and updates the anchors:
     /// reaction → resolve → slip → spread over the patch. Leaves the
     /// sample forces on the object, with their points, in `scratch`
-    /// ([`patch::PatchScratch::for_each_applied`]; none if it applies
+    /// ([`patch::PatchScratch::applied`]; none if it applies
     /// none: the caller clears it first). `press` is this
     /// step's [`Self::press`]; `object` carries the contact's own γ and
     /// damping (its share of its virtual finger's, under the stability
@@ -272,7 +300,7 @@ impl Contact {
         self.normal_force = law.normal.length();
         self.force = law.on_object();
 
-        let mut touching = || proximity.or_else(|| detector.still_touching(&motion.now, object));
+        let mut touching = || proximity.or_else(|| detector.still_touching(&motion.now(), object));
         match law.state {
             FrictionState::Separated if press.depth > 0.0 => {
                 // Still inside, but the damper says the surfaces part faster
@@ -347,8 +375,8 @@ impl Contact {
         } else {
             patch::Rocking::soft(object)
         };
-        let skin = Mat3::from_quat(anchor.bone.rotation(motion.now, &motion.palm_now));
-        let skin_before = Mat3::from_quat(anchor.bone.rotation(motion.prev, &motion.palm_prev));
+        let skin = Mat3::from_quat(anchor.bone.rotation(motion.now(), motion.palm_now()));
+        let skin_before = Mat3::from_quat(anchor.bone.rotation(motion.prev(), motion.palm_prev()));
         let step = patch::PatchStep {
             center: site.c,
             normal: site.surface_n,

@@ -275,21 +275,13 @@ impl PatchScratch {
         self.applied = false;
     }
 
-    /// Calls `f` with the last spread contact's samples four at a time, in
-    /// sample order: their forces on the object (N), their points (world,
-    /// m), their torques about `origin` (`(point − origin) × force`, N·m,
-    /// with `glam`'s bits in each lane) and how many lanes hold samples.
+    /// The last spread contact's samples, if it applies any: their forces
+    /// on the object (N) and their points (world, m), four to a chunk.
+    /// A loop over them is the caller's, written out: a closure called
+    /// from here would be left out of line, in the baseline build.
     #[inline(always)]
-    pub fn for_each_applied(&self, origin: Vec3, mut f: impl FnMut(&Chunk, &Chunk, &Chunk, usize)) {
-        if !self.applied {
-            return;
-        }
-        let origin = lanes::splat(origin);
-        let chunks = self.forces.chunks().iter().zip(self.points.chunks());
-        for (j, (force, point)) in chunks.enumerate() {
-            let torque = lanes::cross(lanes::sub(*point, origin), *force);
-            f(force, point, &torque, self.forces.used(j));
-        }
+    pub fn applied(&self) -> Option<(&Vec3Lanes, &Vec3Lanes)> {
+        self.applied.then_some((&self.forces, &self.points))
     }
 }
 
@@ -299,7 +291,7 @@ impl PatchScratch {
 /// beyond it slips by the slip rule, which is how a patch slips in
 /// torsion). No sample pulls ([`push_only`]). Writes the samples' world
 /// points to `points` and leaves `(force on the object, point)` per
-/// sample in `scratch` ([`PatchScratch::for_each_applied`]).
+/// sample in `scratch` ([`PatchScratch::applied`]).
 ///
 /// Four samples at a time ([`super::lanes`]): the same arithmetic, in the
 /// same order, as one sample at a time, so the same bits.

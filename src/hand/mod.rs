@@ -351,6 +351,7 @@ impl HandPose {
     }
 
     /// The shape of one bone.
+    #[inline]
     pub fn bone(&self, bone: Bone) -> BoneShape {
         match bone {
             Bone::Palm => BoneShape::Palm(self.palm),

@@ -28,26 +28,30 @@ impl Stage<'_> {
         let com = body.center_of_mass();
         let (mut force, mut torque) = (body.user_force(), body.user_torque());
         let (mut total, mut pushed) = (slot.hand_force, false);
-        self.patch.for_each_applied(com, |forces, points, torques, used| {
-            // Bitmasks of lanes, four samples at once: those the firewall
-            // passes, and of them, those pushing a dynamic body.
-            let finite = firewall::forces(forces, points);
-            let pushing = if dynamic { finite & lanes::nonzero(forces) } else { 0 };
-            for k in 0..used {
-                if finite & (1 << k) == 0 {
-                    continue;
-                }
-                let f = lanes::lane(forces, k);
-                // Eq. 3.10 (`friction::total_force`) over the forces the
-                // firewall passed: only finite ones are summed.
-                total += f;
-                if pushing & (1 << k) != 0 {
-                    force += f;
-                    torque += lanes::lane(torques, k);
-                    pushed = true;
+        if let Some((forces, points)) = self.patch.applied() {
+            let origin = lanes::splat(com);
+            for (j, (f, q)) in forces.chunks().iter().zip(points.chunks()).enumerate() {
+                let torques = lanes::cross(lanes::sub(*q, origin), *f);
+                // Bitmasks of lanes, four samples at once: those the
+                // firewall passes, and of them, those pushing a dynamic body.
+                let finite = firewall::forces(f, q);
+                let pushing = if dynamic { finite & lanes::nonzero(f) } else { 0 };
+                for k in 0..forces.used(j) {
+                    if finite & (1 << k) == 0 {
+                        continue;
+                    }
+                    let f = lanes::lane(f, k);
+                    // Eq. 3.10 (`friction::total_force`) over the forces the
+                    // firewall passed: only finite ones are summed.
+                    total += f;
+                    if pushing & (1 << k) != 0 {
+                        force += f;
+                        torque += lanes::lane(&torques, k);
+                        pushed = true;
+                    }
                 }
             }
-        });
+        }
         slot.hand_force = total;
         if pushed {
             body.reset_forces(false);

@@ -39,7 +39,7 @@ impl InteractionWorld {
                 let Some(motion) = world.motion(hand, bone) else { return };
                 let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
                 let proximity = Some(prox);
-                step.found.push(Candidate { contact, proximity, motion });
+                step.found.push(Candidate { contact, proximity });
             });
         }
     }

@@ -31,13 +31,13 @@ impl InteractionWorld {
                 None
             } else {
                 let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
-                let Some(prox) = step.detector.still_touching(&motion.now, &object) else {
+                let Some(prox) = step.detector.still_touching(&motion.now(), &object) else {
                     self.push_event(ContactEventKind::Ended, contact);
                     return false;
                 };
                 Some(prox)
             };
-            step.kept.push(Kept { proximity, motion });
+            step.kept.push(Kept { proximity });
             true
         };
         let mut live = 0;

@@ -46,7 +46,7 @@ pub(crate) use substeps::Raised;
 use super::config::InteractionConfig;
 use super::record::Call;
 use super::stability::{StabilityScale, nominal_damping};
-use super::world::{InteractionWorld, ObjectSlot};
+use super::world::{HandSlot, InteractionWorld, ObjectSlot};
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
 use crate::contact::{
@@ -105,16 +105,9 @@ impl InteractionWorld {
     }
 
     /// A bone's shape now and one step ago, if its hand is tracked.
-    fn motion(&self, hand: HandId, bone: Bone) -> Option<BoneMotion> {
-        let slot = self.hands.get(hand.0 as usize)?;
-        let now = slot.pose.as_ref()?;
-        let prev = slot.prev.as_ref().unwrap_or(now);
-        Some(BoneMotion {
-            now: now.bone(bone),
-            prev: prev.bone(bone),
-            palm_now: now.palm,
-            palm_prev: prev.palm,
-        })
+    #[inline(always)]
+    fn motion(&self, hand: HandId, bone: Bone) -> Option<BoneMotion<'_>> {
+        motion_of(&self.hands, hand, bone)
     }
 
     fn push_event(&mut self, kind: ContactEventKind, c: &Contact) {
@@ -182,6 +175,16 @@ fn view_of<'c>(
     }
 }
 
+/// A bone's shape now and one step ago ([`BoneMotion`]), if its hand is
+/// tracked.
+#[inline(always)]
+fn motion_of(hands: &[HandSlot], hand: HandId, bone: Bone) -> Option<BoneMotion<'_>> {
+    let slot = hands.get(hand.0 as usize)?;
+    let pose = slot.pose.as_ref()?;
+    let prev_pose = slot.prev.as_ref().unwrap_or(pose);
+    Some(BoneMotion { bone, pose, prev_pose })
+}
+
 /// Records a contact's event at `time` (s).
 fn push_event(events: &mut Vec<ContactEvent>, time: f64, kind: ContactEventKind, c: &Contact) {
     let (hand, bone, object, point) = (c.hand, c.bone, c.object, c.point);
@@ -197,15 +200,14 @@ pub(super) struct Candidate {
     pub contact: Contact,
     /// The closest features, if a stage has queried them this step.
     pub proximity: Option<Proximity>,
-    pub motion: BoneMotion,
 }
 
 /// A contact `keep_contacts` kept: its closest features, if it queried
-/// them, and its bone's motion this step (looked up once, for stages 4 and 6).
+/// them. Its hand is tracked; stages 4 and 6 look up its bone's motion
+/// ([`motion_of`]).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Kept {
     pub proximity: Option<Proximity>,
-    pub motion: BoneMotion,
 }
 
 /// The order of [`InteractionWorld::contacts`]: by object, then hand, then

@@ -23,17 +23,22 @@ impl InteractionWorld {
         // Each object's view once for its run of contacts (they are sorted
         // by object): the same view, looked up once.
         let mut view: Option<ObjectView> = None;
-        // Kept contacts' hands are tracked: `keep_contacts` ended the others.
-        let kept = self.contacts.iter().zip(step.kept.iter().map(|k| &k.motion));
-        let found = step.found.iter().map(|c| (&c.contact, &c.motion));
-        for (contact, motion) in kept.chain(found) {
+        let found = step.found.iter().map(|c| &c.contact);
+        for contact in self.contacts.iter().chain(found) {
             let object = match view {
                 Some(v) if v.id == contact.object => v,
                 _ => {
                     *view.insert(self.object_view(contact.object.0 as usize, StabilityScale::NONE))
                 }
             };
-            step.presses.push(contact.press(&object, motion, &settings));
+            // Kept and found contacts' hands are tracked (`keep_contacts`
+            // ended the others); one that were not would press nowhere,
+            // and end in stage 6.
+            let press = match self.motion(contact.hand, contact.bone) {
+                Some(motion) => contact.press(&object, &motion, &settings),
+                None => Press::default(),
+            };
+            step.presses.push(press);
             step.sides.push(side_key(contact));
         }
         step.shares.clear();

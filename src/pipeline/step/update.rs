@@ -2,16 +2,14 @@
 //! law, and its forces go to rapier (`apply.rs`) while its patch is still
 //! in cache.
 
-use super::{Candidate, StepScratch, push_event, view_of};
+use super::{Candidate, StepScratch, motion_of, push_event, view_of};
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
-use crate::contact::{
-    BoneMotion, Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Press,
-};
+use crate::contact::{Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Press};
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::config::InteractionConfig;
 use crate::pipeline::stability::StabilityScale;
-use crate::pipeline::world::ObjectSlot;
+use crate::pipeline::world::{HandSlot, ObjectSlot};
 use rapier3d::prelude::{ColliderSet, RigidBodySet};
 
 impl InteractionWorld {
@@ -22,11 +20,12 @@ impl InteractionWorld {
     pub(super) fn update_contacts(&mut self, step: &mut StepScratch) {
         let mut contacts = std::mem::take(&mut self.contacts);
         let mut found = std::mem::take(&mut step.found);
-        let InteractionWorld { physics, config, objects, events, forced, time, .. } = self;
+        let InteractionWorld { physics, config, objects, hands, events, forced, time, .. } = self;
         let StepScratch { kept, presses, shares, limits, settings, detector, patch, .. } = step;
         let mut stage = Stage {
             colliders: &physics.colliders,
             config,
+            hands,
             presses,
             shares,
             limits,
@@ -43,7 +42,7 @@ impl InteractionWorld {
         let mut live = 0;
         for (i, kept) in kept.iter().enumerate() {
             // The poses have not changed since `keep_contacts` found it.
-            if stage.update(&mut contacts[i], kept.proximity, &kept.motion, i, false) {
+            if stage.update(&mut contacts[i], kept.proximity, i, false) {
                 // A swap in place would still copy the contact three times.
                 if live != i {
                     contacts.swap(live, i);
@@ -53,8 +52,8 @@ impl InteractionWorld {
         }
         contacts.truncate(live);
         let first_new = kept.len();
-        for (j, Candidate { mut contact, proximity, motion }) in found.drain(..).enumerate() {
-            if stage.update(&mut contact, proximity, &motion, first_new + j, true) {
+        for (j, Candidate { mut contact, proximity }) in found.drain(..).enumerate() {
+            if stage.update(&mut contact, proximity, first_new + j, true) {
                 contacts.push(contact);
             }
         }
@@ -75,6 +74,8 @@ impl InteractionWorld {
 pub(super) struct Stage<'w> {
     colliders: &'w ColliderSet,
     config: &'w InteractionConfig,
+    /// The hands, whose poses the contacts' bone motions borrow.
+    hands: &'w [HandSlot],
     /// Per contact, in update order: its press and its share of its
     /// virtual finger's γ (stage 4).
     presses: &'w [Press],
@@ -105,7 +106,6 @@ impl Stage<'_> {
         &mut self,
         contact: &mut Contact,
         proximity: Option<Proximity>,
-        motion: &BoneMotion,
         index: usize,
         is_new: bool,
     ) -> bool {
@@ -121,8 +121,15 @@ impl Stage<'_> {
         let object = view.shared(self.shares[index]);
         self.patch.clear();
         let (press, settings) = (&self.presses[index], self.settings);
-        let alive =
-            contact.update(press, proximity, self.detector, motion, &object, settings, self.patch);
+        // Its hand is tracked (`keep_contacts` ended the others): a
+        // contact whose hand were not would end.
+        let alive = match motion_of(self.hands, contact.hand, contact.bone) {
+            Some(motion) => {
+                let detector = &mut *self.detector;
+                contact.update(press, proximity, detector, &motion, &object, settings, self.patch)
+            }
+            None => false,
+        };
         if !alive {
             push_event(self.events, self.time, ContactEventKind::Ended, contact);
             return false;
