@@ -15,7 +15,7 @@
 //! [`Vec3Lanes::len`], [`Vec3Lanes::valid`] masks them out, and a caller
 //! given whole chunks is given [`Vec3Lanes::used`] with each.
 
-use glam::{Mat3, Vec3};
+use glam::{Mat3, Vec3, Vec3A};
 use wide::f32x4;
 
 /// Items per chunk.
@@ -110,6 +110,12 @@ impl Vec3Lanes {
         self.len.saturating_sub(j * LANES).min(LANES)
     }
 
+    /// Which lanes of chunk `j` hold items, as a bitmask.
+    #[inline]
+    pub fn used_mask(&self, j: usize) -> u32 {
+        (1 << self.used(j)) - 1
+    }
+
     /// The chunks, the last one padded.
     #[inline]
     pub fn chunks(&self) -> &[Chunk] {
@@ -198,6 +204,43 @@ pub(crate) fn nonzero(c: &Chunk) -> u32 {
     !(c[0].simd_eq(zero) & c[1].simd_eq(zero) & c[2].simd_eq(zero)).to_bitmask() & 0b1111
 }
 
+/// `c`'s lanes whose bit `mask` has, `-0.0` in the others. `x + (-0.0)` is
+/// `x` for every `x`, zeros' signs included, so a sum that adds a lane left
+/// out has the bits of one that skips it ([`add_in_order`]).
+#[inline]
+pub(crate) fn keep(c: &Chunk, mask: u32) -> Chunk {
+    let kept = f32x4::new(LANE_MASKS[(mask & 0b1111) as usize]);
+    c.map(|x| kept.bitselect(x, f32x4::splat(-0.0)))
+}
+
+/// Per bitmask of lanes, a mask with all of a lane's bits set where it has
+/// the lane's bit.
+const LANE_MASKS: [[f32; LANES]; 1 << LANES] = {
+    let mut masks = [[0.0; LANES]; 1 << LANES];
+    let mut mask = 0;
+    while mask < 1 << LANES {
+        let mut k = 0;
+        while k < LANES {
+            if mask & (1 << k) != 0 {
+                masks[mask][k] = f32::from_bits(u32::MAX);
+            }
+            k += 1;
+        }
+        mask += 1;
+    }
+    masks
+};
+
+/// Adds the four vectors of `c` to `sum` one after another, in lane order:
+/// the sums, and so the bits, of a loop over them.
+#[inline]
+pub(crate) fn add_in_order(sum: &mut Vec3A, c: &Chunk) {
+    let [x, y, z] = c.map(|v| v.to_array());
+    for k in 0..LANES {
+        *sum += Vec3A::new(x[k], y[k], z[k]);
+    }
+}
+
 /// A matrix's columns, each in every lane: splat once, multiply many.
 pub(crate) type Mat3Lanes = [Chunk; 3];
 
@@ -255,6 +298,24 @@ mod tests {
         let glam = items.iter().enumerate().filter(|(_, v)| **v != Vec3::ZERO);
         assert_eq!(nonzero(&chunk), glam.fold(0, |mask, (k, _)| mask | 1 << k));
         assert_eq!(nonzero(&chunk), 0b1010);
+    }
+
+    #[test]
+    fn lanes_left_out_of_a_sum_leave_the_bits_of_skipping_them() {
+        // Signed zeros in both the items and the sums: adding +0.0 instead
+        // of -0.0 would turn a -0.0 sum into +0.0.
+        let items = [Vec3::new(-0.0, 0.25, -0.0), Vec3::new(1e-3, -0.0, 0.0), -Vec3::Z, Vec3::NAN];
+        let chunk = Vec3Lanes::from_items(items).chunks()[0];
+        for start in [Vec3::new(-0.0, -0.0, 0.0), Vec3::new(3.5, -0.0, -7e-4)] {
+            for mask in 0..1 << LANES {
+                let mut lanes = Vec3A::from(start);
+                add_in_order(&mut lanes, &keep(&chunk, mask));
+                let kept = items.iter().enumerate().filter(|(k, _)| mask & 1 << k != 0);
+                let skipped = kept.fold(start, |sum, (_, v)| sum + *v);
+                let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+                assert_eq!(bits(lanes.into()), bits(skipped), "mask {mask:04b} from {start}");
+            }
+        }
     }
 
     #[test]

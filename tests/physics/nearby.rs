@@ -87,3 +87,54 @@ fn objects_added_or_put_down_touch_the_hand_in_their_first_step() {
     world.step();
     assert!(began(&world, far), "an object put down in the palm is touched at once");
 }
+
+/// Steps until the ball is within the contact offset of the palm (at most
+/// `steps`), asserting that it is touched then and not before.
+fn touched_on_arrival(
+    world: &mut InteractionWorld,
+    pose: impl Fn(usize) -> HandPose,
+    id: ObjectId,
+) {
+    let offset = world.config().contact_offset;
+    let hand = coulomb_hands::hand::HandId(0);
+    for step in 0..400 {
+        let pose = pose(step);
+        world.set_hand_pose(hand, &pose).expect("a valid pose");
+        let before = gap(world, &pose, id);
+        world.step();
+        if before <= offset {
+            assert!(began(world, id), "a ball {before} m from the palm was missed at step {step}");
+            return;
+        }
+        assert!(!began(world, id), "touched {before} m away");
+    }
+    panic!("the ball never came near the palm");
+}
+
+#[test]
+fn a_ball_drifting_into_a_still_hand_is_touched_on_arrival() {
+    // A hand that holds still keeps its broad-phase answer from step to
+    // step: the ball, 23 mm out at 0.37 m/s, must still be found when it
+    // arrives, some 60 steps later.
+    let (mut world, pose) = open_hand(Vec3::new(0.04, 0.61, 0.12));
+    let start = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + 0.023));
+    let id = world.add_object(&ball("drifting", start)).expect("a valid ball");
+    world.step();
+    let body = world.object_body(id).expect("an object");
+    let towards = pose.palm.rotation * -Vec3::Y * 0.37;
+    world.physics_mut().bodies[body].set_linvel(towards, true);
+    touched_on_arrival(&mut world, |_| pose.clone(), id);
+}
+
+#[test]
+fn a_hand_creeping_onto_a_resting_ball_touches_it_on_arrival() {
+    // The ball rests 31 mm from the palm; the hand comes 0.45 mm a step
+    // closer, so its box leaves the box its answer was asked for.
+    let (mut world, pose) = open_hand(Vec3::new(-0.13, 0.52, 0.07));
+    let at = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + 0.031));
+    let id = world.add_object(&ball("resting", at)).expect("a valid ball");
+    world.step();
+    let towards = pose.palm.rotation * Vec3::Y * 0.000_45;
+    let moved = |step: usize| pose.transformed(Vec3::ZERO, Quat::IDENTITY, towards * step as f32);
+    touched_on_arrival(&mut world, moved, id);
+}

@@ -4,6 +4,7 @@ use super::update::Stage;
 use crate::contact::lanes;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;
+use glam::Vec3A;
 
 impl Stage<'_> {
     /// Applies the sample forces of the contact just updated (in
@@ -26,38 +27,33 @@ impl Stage<'_> {
         let body = &mut self.bodies[slot.body];
         let dynamic = body.is_dynamic();
         let com = body.center_of_mass();
-        let (mut force, mut torque) = (body.user_force(), body.user_torque());
-        let (mut total, mut pushed) = (slot.hand_force, false);
+        let (mut force, mut torque) = (body.user_force().into(), body.user_torque().into());
+        let (mut total, mut pushed) = (Vec3A::from(slot.hand_force), false);
         if let Some((forces, points)) = self.patch.applied() {
             let origin = lanes::splat(com);
             for (j, (f, q)) in forces.chunks().iter().zip(points.chunks()).enumerate() {
-                let torques = lanes::cross(lanes::sub(*q, origin), *f);
                 // Bitmasks of lanes, four samples at once: those the
-                // firewall passes, and of them, those pushing a dynamic body.
-                let finite = firewall::forces(f, q);
+                // firewall passes, and of them, those pushing a dynamic
+                // body. The others add -0.0: the bits of skipping them.
+                let finite = firewall::forces(f, q) & forces.used_mask(j);
+                // Eq. 3.10 (`friction::total_force`) over the forces the
+                // firewall passed: only finite ones are summed.
+                lanes::add_in_order(&mut total, &lanes::keep(f, finite));
                 let pushing = if dynamic { finite & lanes::nonzero(f) } else { 0 };
-                for k in 0..forces.used(j) {
-                    if finite & (1 << k) == 0 {
-                        continue;
-                    }
-                    let f = lanes::lane(f, k);
-                    // Eq. 3.10 (`friction::total_force`) over the forces the
-                    // firewall passed: only finite ones are summed.
-                    total += f;
-                    if pushing & (1 << k) != 0 {
-                        force += f;
-                        torque += lanes::lane(&torques, k);
-                        pushed = true;
-                    }
+                if pushing != 0 {
+                    let torques = lanes::cross(lanes::sub(*q, origin), *f);
+                    lanes::add_in_order(&mut force, &lanes::keep(f, pushing));
+                    lanes::add_in_order(&mut torque, &lanes::keep(&torques, pushing));
+                    pushed = true;
                 }
             }
         }
-        slot.hand_force = total;
+        slot.hand_force = total.into();
         if pushed {
             body.reset_forces(false);
             body.reset_torques(false);
-            body.add_force(force, false);
-            body.add_torque(torque, false);
+            body.add_force(force.into(), false);
+            body.add_torque(torque.into(), false);
             body.wake_up(true);
         }
     }

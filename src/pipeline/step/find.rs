@@ -27,8 +27,12 @@ impl InteractionWorld {
             let Some(pose) = world.hands[h].pose.as_ref() else { continue };
             let bones = Bone::all().map(|bone| (bone, pose.bone(bone)));
             let Some(reach) = step.detector.reach(bones) else { continue };
-            let margin = *margin.get_or_insert_with(|| world.motion_margin());
-            world.objects_near(&reach, margin, &mut step.near);
+            let margin = *margin.get_or_insert_with(|| {
+                let margin = world.motion_margin();
+                step.near.advance(margin, world.time, world.config.dt);
+                margin
+            });
+            world.objects_near(h, &reach, margin, &mut step.near);
             let near = &step.near.found;
             step.near.known.clear();
             for &(o, _) in near {

@@ -73,6 +73,11 @@ impl InteractionWorld {
     /// step's hand forces on the objects: the first half of [`Self::step`].
     pub fn apply_hand_forces(&mut self) {
         let mut step = std::mem::take(&mut self.scratch);
+        if self.external || !self.unindexed.is_empty() {
+            // Objects added, put down or moved by a program since the
+            // last step: the kept broad-phase answers bound none of that.
+            step.near.forget();
+        }
         self.events.clear();
         self.clear_forces();
         contact_stages(self, &mut step);

@@ -10,6 +10,12 @@
 //! boxes of those candidates then filter them as a scan of every object
 //! would: the same objects, in the same order, so the same contacts.
 //!
+//! One answer serves a hand for several steps: it is asked for the hand's
+//! box loosened by a slack, and kept while the hand's box, loosened by how
+//! far any object may have moved since (the margins of the steps between,
+//! summed), stays inside what it answered for. Objects added or put down,
+//! and a program's writes to rapier, make every hand ask again.
+//!
 //! Invariant: every object whose box meets the hand's box is among the
 //! candidates. An object moved through [`InteractionWorld::physics_mut`] is
 //! outside it until rapier's next step, as for rapier's own scene queries.
@@ -42,6 +48,66 @@ pub(crate) struct Nearby {
     /// Per object of `found`, the hand's bones touching it already, a bit
     /// per [`crate::hand::Bone::index`] (`find.rs`).
     pub known: Vec<u16>,
+    /// Per hand, its last broad-phase answer, while it may still serve.
+    answers: Vec<Option<Answer>>,
+    /// The simulated time (s) at which the answers' drift was last
+    /// advanced ([`Nearby::advance`]).
+    advanced_at: Option<f64>,
+}
+
+/// How far beyond a hand's reach (m) its broad-phase query looks, so that
+/// one answer serves the next steps while the hand stays inside that box
+/// and the objects move less than what is left of it. A hand moving at
+/// 1 m/s moves 1 mm a step at 1 kHz: one answer serves about ten steps.
+const SLACK: f32 = 0.01;
+
+/// One hand's broad-phase answer, kept from step to step.
+#[derive(Debug)]
+struct Answer {
+    /// The box it answers for (world, m): every object whose box met it
+    /// when it was asked is among `ids`.
+    reach: Aabb,
+    /// Those candidates, sorted.
+    ids: Vec<usize>,
+    /// How far any object may have moved since (m).
+    drift: f32,
+}
+
+impl Nearby {
+    /// Forgets every hand's answer: objects were added, put down or moved
+    /// by a program ([`InteractionWorld::physics_mut`]), which no drift
+    /// bounds.
+    pub fn forget(&mut self) {
+        self.answers.iter_mut().for_each(|a| *a = None);
+    }
+
+    /// Starts a step at simulated `time` (s), after rapier's steps of `dt`
+    /// (s), in which any object moved at most `margin` (m): each kept
+    /// answer's drift grows by it. A step skipped (no hand tracked) leaves
+    /// a rapier step unbounded, so it forgets them; the same time again
+    /// (no rapier step since) adds nothing.
+    pub fn advance(&mut self, margin: f32, time: f64, dt: f32) {
+        let last = self.advanced_at.replace(time);
+        if last == Some(time) {
+            return;
+        }
+        if last.is_some_and(|t| t + dt as f64 == time) && margin.is_finite() {
+            for answer in self.answers.iter_mut().flatten() {
+                answer.drift += margin;
+            }
+        } else {
+            self.forget();
+        }
+    }
+
+    /// Whether hand `h`'s answer from an earlier step still holds every
+    /// object whose box may meet `hand` (world, m): `hand`, loosened by how
+    /// far any object may have moved since, is inside the box it answered
+    /// for.
+    fn serves(&self, h: usize, hand: &Aabb) -> bool {
+        let answer = self.answers.get(h).and_then(Option::as_ref);
+        answer.is_some_and(|a| a.reach.contains(&hand.loosened(a.drift)))
+    }
 }
 
 impl InteractionWorld {
@@ -61,35 +127,75 @@ impl InteractionWorld {
         if margin.is_finite() { margin } else { f32::INFINITY }
     }
 
-    /// Fills `near.found` with the objects whose boxes meet `hand` (world),
-    /// in index order, given this step's [`Self::motion_margin`].
-    pub(super) fn objects_near(&self, hand: &Aabb, margin: f32, near: &mut Nearby) {
+    /// Fills `near.found` with the objects whose boxes meet hand `h`'s box
+    /// `hand` (world), in index order, given this step's
+    /// [`Self::motion_margin`], after [`Nearby::advance`].
+    pub(super) fn objects_near(&self, h: usize, hand: &Aabb, margin: f32, near: &mut Nearby) {
+        if !near.serves(h, hand) {
+            self.ask_broad_phase(h, hand, margin, near);
+        }
+        let colliders = &self.physics.colliders;
+        let bounds = |o: usize| colliders[self.objects[o].collider].compute_aabb();
+        let Nearby { ids, found, answers, .. } = near;
+        found.clear();
+        let Some(answer) = answers.get_mut(h).and_then(Option::as_mut) else {
+            // No answer kept: every object is a candidate.
+            for &o in ids.iter() {
+                let bounds = bounds(o);
+                if hand.intersects(&bounds) {
+                    found.push((o, bounds));
+                }
+            }
+            return;
+        };
+        // A candidate whose box is now outside the answer's box can meet
+        // the hand's only after moving farther than the answer allows: it
+        // is dropped from the answer.
+        let reach = answer.reach;
+        answer.ids.retain(|&o| {
+            let bounds = bounds(o);
+            if hand.intersects(&bounds) {
+                found.push((o, bounds));
+            }
+            bounds.intersects(&reach)
+        });
+    }
+
+    /// Asks rapier's broad phase for the objects near hand `h`'s box `hand`
+    /// loosened by [`SLACK`], and keeps the answer for the next steps. With
+    /// a margin that bounds nothing, every object is a candidate, in
+    /// `near.ids`, and nothing is kept.
+    fn ask_broad_phase(&self, h: usize, hand: &Aabb, margin: f32, near: &mut Nearby) {
         let physics = &self.physics;
         let objects = self.objects.len();
-        near.ids.clear();
-        if margin.is_finite() {
-            let query = physics.broad_phase.as_query_pipeline(
-                physics.narrow_phase.query_dispatcher(),
-                &physics.bodies,
-                &physics.colliders,
-                QueryFilter::default(),
-            );
-            let found = query.intersect_aabb_conservative(hand.loosened(margin));
-            near.ids.extend(found.filter_map(|(_, collider)| tagged(collider.user_data, objects)));
-            near.ids.extend(self.unindexed.iter().map(|&o| o as usize));
-        } else {
+        if near.answers.len() <= h {
+            near.answers.resize_with(h + 1, || None);
+        }
+        if !margin.is_finite() {
             // A speed that bounds nothing: every object is a candidate.
+            near.answers[h] = None;
+            near.ids.clear();
             near.ids.extend(0..objects);
+            return;
         }
-        near.ids.sort_unstable();
-        near.ids.dedup();
-        near.found.clear();
-        for &o in &near.ids {
-            let bounds = physics.colliders[self.objects[o].collider].compute_aabb();
-            if hand.intersects(&bounds) {
-                near.found.push((o, bounds));
-            }
-        }
+        let reach = hand.loosened(SLACK);
+        let mut answer =
+            near.answers[h].take().unwrap_or(Answer { reach, ids: Vec::new(), drift: 0.0 });
+        let query = physics.broad_phase.as_query_pipeline(
+            physics.narrow_phase.query_dispatcher(),
+            &physics.bodies,
+            &physics.colliders,
+            QueryFilter::default(),
+        );
+        let found = query.intersect_aabb_conservative(reach.loosened(margin));
+        let ids = &mut answer.ids;
+        ids.clear();
+        ids.extend(found.filter_map(|(_, collider)| tagged(collider.user_data, objects)));
+        ids.extend(self.unindexed.iter().map(|&o| o as usize));
+        ids.sort_unstable();
+        ids.dedup();
+        (answer.reach, answer.drift) = (reach, 0.0);
+        near.answers[h] = Some(answer);
     }
 }
 
