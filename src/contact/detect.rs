@@ -11,7 +11,7 @@
 //! A live contact asks only the last question, within the release offset.
 
 use super::ObjectView;
-use crate::hand::{Bone, BoneShape};
+use crate::hand::{Bone, BoneShape, HandPose};
 use glam::Vec3;
 use rapier3d::math::Pose;
 use rapier3d::parry::bounding_volume::{Aabb, BoundingVolume};
@@ -41,9 +41,9 @@ pub(crate) struct Detector {
     pub contact_offset: f32,
     /// A contact ends beyond this distance (m).
     pub release_offset: f32,
-    /// Per bone of the hand being searched: its shape now and its reach,
-    /// the bone's box grown by the contact offset.
-    reach: Vec<(Bone, BoneShape, Aabb)>,
+    /// Per bone of the hand being searched: its reach, the bone's box
+    /// grown by the contact offset.
+    reach: Vec<(Bone, Aabb)>,
     /// The penetration query's buffers ([`contact`]).
     epa: EPA,
 }
@@ -71,46 +71,47 @@ impl Detector {
         within(&mut self.epa, bone, object, self.release_offset)
     }
 
-    /// Starts the search of one hand: keeps each of `bones` (the hand's
-    /// tracked bones, as they are now) with its reach, and returns the
-    /// whole hand's reach (world), the box to find objects near; `None`
-    /// for no bones.
+    /// Starts the search of one hand, posed `pose` (world): keeps each
+    /// bone's reach, its box grown by the contact offset, and returns the
+    /// whole hand's reach, the box to find objects near.
     #[inline(always)]
-    pub fn reach(&mut self, bones: impl Iterator<Item = (Bone, BoneShape)>) -> Option<Aabb> {
+    pub fn reach(&mut self, pose: &HandPose) -> Aabb {
         self.reach.clear();
         let mut hand: Option<Aabb> = None;
-        for (bone, now) in bones {
-            let reach = bone_aabb(&now).loosened(self.contact_offset);
+        for bone in Bone::all() {
+            let reach = bone_aabb(&pose.bone(bone)).loosened(self.contact_offset);
             hand = Some(hand.map_or(reach, |h| h.merged(&reach)));
-            self.reach.push((bone, now, reach));
+            self.reach.push((bone, reach));
         }
-        hand
+        hand.unwrap_or_else(Aabb::new_invalid)
     }
 
-    /// The new touches of the hand [`Self::reach`] started, through the
-    /// rest of the filter chain. `near` holds the objects whose boxes meet
-    /// the hand's reach, in index order, with their boxes; `view(o)` is
-    /// object `o` itself. `known[k]` has a bit (by [`Bone::index`]) for
-    /// each bone in contact with `near[k]` already: those pairs are left
-    /// out before their exact query. `touch` is called for every bone
-    /// whose surface is within the contact offset of an object, in bone
-    /// order, then object order.
+    /// The new touches of the hand [`Self::reach`] started, posed `pose`,
+    /// through the rest of the filter chain. `near` holds the objects whose
+    /// boxes meet the hand's reach, in index order, with their boxes;
+    /// `view(o)` is object `o` itself. `known[k]` has a bit (by
+    /// [`Bone::index`]) for each bone in contact with `near[k]` already:
+    /// those pairs are left out before their exact query. `touch` is
+    /// called for every bone whose surface is within the contact offset of
+    /// an object, in bone order, then object order.
     #[inline(always)]
     pub fn new_touches<'v>(
         &mut self,
+        pose: &HandPose,
         near: &[(usize, Aabb)],
         known: &[u16],
         view: impl Fn(usize) -> ObjectView<'v>,
         mut touch: impl FnMut(Bone, &ObjectView<'v>, Proximity),
     ) {
-        for (bone, now, reach) in &self.reach {
+        for (bone, reach) in &self.reach {
             let bit = 1 << bone.index();
             for (&(o, bounds), &known) in near.iter().zip(known) {
-                if !reach.intersects(&bounds) || known & bit != 0 {
+                if known & bit != 0 || !reach.intersects(&bounds) {
                     continue;
                 }
                 let object = view(o);
-                if let Some(prox) = within(&mut self.epa, now, &object, self.contact_offset) {
+                let now = pose.bone(*bone);
+                if let Some(prox) = within(&mut self.epa, &now, &object, self.contact_offset) {
                     touch(*bone, &object, prox);
                 }
             }

@@ -6,6 +6,21 @@ use crate::pipeline::firewall;
 use crate::scene::ObjectId;
 use glam::Vec3A;
 
+/// The hand forces of one object's run of contacts, summed as they are
+/// applied and written to rapier once, when the run ends ([`Stage::flush`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct RunForces {
+    object: ObjectId,
+    /// The body's user force (N) and torque (N·m), this run's samples
+    /// added to what it had.
+    force: Vec3A,
+    torque: Vec3A,
+    /// The object's total hand force (N), Eq. 3.10.
+    total: Vec3A,
+    /// Whether any sample pushed the body: then they are written.
+    pushed: bool,
+}
+
 impl Stage<'_> {
     /// Applies the sample forces of the contact just updated (in
     /// `self.patch`) to its object, as rapier's `add_force_at_point` would
@@ -14,23 +29,26 @@ impl Stage<'_> {
     /// ([`crate::friction::total_force`]: the samples of a contact share
     /// its force exactly, so their sum is the contacts' sum).
     ///
-    /// The body's force and torque are summed here and written back once:
-    /// the same sums, in the same order, as `add_force_at_point` per sample
-    /// (so the same bits), without its per-sample checks and wake-ups.
+    /// The body's force and torque are summed here, over the object's run
+    /// of contacts, and written back once ([`Self::flush`]): the same sums,
+    /// in the same order, as `add_force_at_point` per sample, without its
+    /// per-sample checks and wake-ups. Written once a contact, they would
+    /// differ at most in the sign of a zero partial sum, which the write
+    /// (`0 + sum`) makes +0 either way: so the same bits.
     #[inline(always)]
     pub(super) fn apply_forces(&mut self, object: ObjectId) {
-        let slot = &mut self.objects[object.0 as usize];
-        if !slot.forced {
-            slot.forced = true;
-            self.forced.push(object.0);
-        }
-        let body = &mut self.bodies[slot.body];
+        let run = match self.run {
+            Some(run) if run.object == object => run,
+            _ => {
+                self.flush();
+                self.start_run(object)
+            }
+        };
+        let RunForces { mut force, mut torque, mut total, mut pushed, .. } = run;
+        let body = &self.bodies[self.objects[object.0 as usize].body];
         let dynamic = body.is_dynamic();
-        let com = body.center_of_mass();
-        let (mut force, mut torque) = (body.user_force().into(), body.user_torque().into());
-        let (mut total, mut pushed) = (Vec3A::from(slot.hand_force), false);
         if let Some((forces, points)) = self.patch.applied() {
-            let origin = lanes::splat(com);
+            let origin = lanes::splat(body.center_of_mass());
             for (j, (f, q)) in forces.chunks().iter().zip(points.chunks()).enumerate() {
                 // Bitmasks of lanes, four samples at once: those the
                 // firewall passes, and of them, those pushing a dynamic
@@ -48,12 +66,37 @@ impl Stage<'_> {
                 }
             }
         }
-        slot.hand_force = total.into();
-        if pushed {
+        self.run = Some(RunForces { object, force, torque, total, pushed });
+    }
+
+    /// Starts summing `object`'s forces: from its body's user force and
+    /// torque and its total so far. It will be cleared next step.
+    #[inline(always)]
+    fn start_run(&mut self, object: ObjectId) -> RunForces {
+        let slot = &mut self.objects[object.0 as usize];
+        if !slot.forced {
+            slot.forced = true;
+            self.forced.push(object.0);
+        }
+        let body = &self.bodies[slot.body];
+        let (force, torque) = (body.user_force().into(), body.user_torque().into());
+        RunForces { object, force, torque, total: slot.hand_force.into(), pushed: false }
+    }
+
+    /// Writes the run of forces summed so far to its object's body and
+    /// total, if there is one: at the end of each run of contacts on an
+    /// object, and of the stage.
+    #[inline(always)]
+    pub(super) fn flush(&mut self) {
+        let Some(run) = self.run.take() else { return };
+        let slot = &mut self.objects[run.object.0 as usize];
+        slot.hand_force = run.total.into();
+        if run.pushed {
+            let body = &mut self.bodies[slot.body];
             body.reset_forces(false);
             body.reset_torques(false);
-            body.add_force(force.into(), false);
-            body.add_torque(torque.into(), false);
+            body.add_force(run.force.into(), false);
+            body.add_torque(run.torque.into(), false);
             body.wake_up(true);
         }
     }

@@ -2,10 +2,10 @@
 
 use super::{Candidate, StepScratch};
 use crate::contact::Contact;
-use crate::hand::{Bone, HandId};
+use crate::hand::HandId;
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::stability::StabilityScale;
-use crate::scene::ObjectId;
+use rapier3d::parry::bounding_volume::Aabb;
 
 impl InteractionWorld {
     /// Begins a contact for every bone within the contact offset of an
@@ -25,8 +25,7 @@ impl InteractionWorld {
             let hand = HandId(h as u32);
             // A bone's motion is looked up only for a touch.
             let Some(pose) = world.hands[h].pose.as_ref() else { continue };
-            let bones = Bone::all().map(|bone| (bone, pose.bone(bone)));
-            let Some(reach) = step.detector.reach(bones) else { continue };
+            let reach = step.detector.reach(pose);
             let margin = *margin.get_or_insert_with(|| {
                 let margin = world.motion_margin();
                 step.near.advance(margin, world.time, world.config.dt);
@@ -34,12 +33,10 @@ impl InteractionWorld {
             });
             world.objects_near(h, &reach, margin, &mut step.near);
             let near = &step.near.found;
-            step.near.known.clear();
-            for &(o, _) in near {
-                step.near.known.push(known_bones(kept, o, hand));
-            }
+            known_bones(kept, near, hand, &mut step.near.known);
             let view = |o| world.object_view(o, StabilityScale::NONE);
-            step.detector.new_touches(near, &step.near.known, view, |bone, object, prox| {
+            let known = &step.near.known;
+            step.detector.new_touches(pose, near, known, view, |bone, object, prox| {
                 let Some(motion) = world.motion(hand, bone) else { return };
                 let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
                 let proximity = Some(prox);
@@ -49,12 +46,24 @@ impl InteractionWorld {
     }
 }
 
-/// Which of `hand`'s bones touch object `o` already, a bit per
-/// [`Bone::index`]: `contacts` are sorted by [`super::contact_key`], so those
-/// contacts are one run, found by one binary search.
-fn known_bones(contacts: &[Contact], o: usize, hand: HandId) -> u16 {
-    let side = (ObjectId(o as u32), hand);
-    let start = contacts.partition_point(|c| (c.object, c.hand) < side);
-    let run = contacts[start..].iter().take_while(|c| (c.object, c.hand) == side);
-    run.fold(0, |known, c| known | 1 << c.bone.index())
+/// For each object of `near` (in index order), which of `hand`'s bones
+/// touch it already, a bit per [`crate::hand::Bone::index`], into `known`: `contacts`
+/// are sorted by [`super::contact_key`], so one pass over both finds them.
+#[inline(always)]
+fn known_bones(contacts: &[Contact], near: &[(usize, Aabb)], hand: HandId, known: &mut Vec<u16>) {
+    known.clear();
+    known.resize(near.len(), 0);
+    let mut k = 0;
+    for c in contacts {
+        let o = c.object.0 as usize;
+        while k < near.len() && near[k].0 < o {
+            k += 1;
+        }
+        if k == near.len() {
+            break;
+        }
+        if near[k].0 == o && c.hand == hand {
+            known[k] |= 1 << c.bone.index();
+        }
+    }
 }

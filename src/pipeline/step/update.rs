@@ -2,6 +2,7 @@
 //! law, and its forces go to rapier (`apply.rs`) while its patch is still
 //! in cache.
 
+use super::apply::RunForces;
 use super::{Candidate, StepScratch, motion_of, push_event, view_of};
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
@@ -38,6 +39,7 @@ impl InteractionWorld {
             time: *time,
             patch,
             view: None,
+            run: None,
         };
         let mut live = 0;
         for (i, kept) in kept.iter().enumerate() {
@@ -57,6 +59,7 @@ impl InteractionWorld {
                 contacts.push(contact);
             }
         }
+        stage.flush();
         step.found = found;
         // Kept contacts stay in order, so a step that found none is sorted
         // already: checked, it skips the stable sort's scratch allocation.
@@ -93,6 +96,8 @@ pub(super) struct Stage<'w> {
     /// The last object's view under its stability limit, before any
     /// contact's share: applying forces changes none of what it holds.
     view: Option<ObjectView<'w>>,
+    /// The forces of the last object's run of contacts, not yet written.
+    pub(super) run: Option<RunForces>,
 }
 
 impl Stage<'_> {
