@@ -19,6 +19,7 @@ use super::config::InteractionConfig;
 use super::step::StepScratch;
 use super::world::{InteractionWorld, ObjectSlot};
 use crate::friction;
+use glam::Vec3;
 
 /// Factors (≤ 1) on an object's contact stiffness and damping that keep the
 /// explicit contact forces stable.
@@ -59,20 +60,30 @@ impl InteractionWorld {
             step.limits[c.object.0 as usize] = none;
         }
         step.touched.clear();
+        // What the object's body says, looked up once for a run of its
+        // contacts: its centre of mass, largest 1/inertia and damping.
+        let mut body_of: Option<(usize, Vec3, f32, f32)> = None;
         for (c, &share) in contacts().zip(&step.shares) {
             let o = c.object.0 as usize;
             let slot = &self.objects[o];
-            let body = &self.physics.bodies[slot.body];
-            let inv_inertia =
-                body.mass_properties().local_mprops.inv_principal_inertia.max_element();
-            let r = c.point - body.center_of_mass();
+            let (_, center_of_mass, inv_inertia, damping) = match body_of {
+                Some(known) if known.0 == o => known,
+                _ => {
+                    let body = &self.physics.bodies[slot.body];
+                    let inv_inertia =
+                        body.mass_properties().local_mprops.inv_principal_inertia.max_element();
+                    let damping = nominal_damping(&self.config, slot);
+                    *body_of.insert((o, body.center_of_mass(), inv_inertia, damping))
+                }
+            };
+            let r = c.point - center_of_mass;
             let w = share * (1.0 / slot.mass + r.length_squared() * inv_inertia);
             let limit = &mut step.limits[o];
             if limit.contacts == 0 {
                 step.touched.push(o);
             }
             limit.stiffness += slot.gamma * w;
-            limit.damping += nominal_damping(&self.config, slot) * w;
+            limit.damping += damping * w;
             limit.contacts += 1;
         }
         for &o in &step.touched {

@@ -4,7 +4,7 @@ use super::update::Stage;
 use crate::contact::lanes;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;
-use glam::Vec3A;
+use glam::{Vec3, Vec3A};
 
 /// The hand forces of one object's run of contacts, summed as they are
 /// applied and written to rapier once, when the run ends ([`Stage::flush`]).
@@ -19,6 +19,10 @@ pub(super) struct RunForces {
     total: Vec3A,
     /// Whether any sample pushed the body: then they are written.
     pushed: bool,
+    /// Whether rapier moves the body, and its centre of mass (world, m),
+    /// which the torques are taken about.
+    dynamic: bool,
+    center_of_mass: Vec3,
 }
 
 impl Stage<'_> {
@@ -44,11 +48,9 @@ impl Stage<'_> {
                 self.start_run(object)
             }
         };
-        let RunForces { mut force, mut torque, mut total, mut pushed, .. } = run;
-        let body = &self.bodies[self.objects[object.0 as usize].body];
-        let dynamic = body.is_dynamic();
+        let RunForces { mut force, mut torque, mut total, mut pushed, dynamic, .. } = run;
         if let Some((forces, points)) = self.patch.applied() {
-            let origin = lanes::splat(body.center_of_mass());
+            let origin = lanes::splat(run.center_of_mass);
             for (j, (f, q)) in forces.chunks().iter().zip(points.chunks()).enumerate() {
                 // Bitmasks of lanes, four samples at once: those the
                 // firewall passes, and of them, those pushing a dynamic
@@ -66,7 +68,7 @@ impl Stage<'_> {
                 }
             }
         }
-        self.run = Some(RunForces { object, force, torque, total, pushed });
+        self.run = Some(RunForces { force, torque, total, pushed, ..run });
     }
 
     /// Starts summing `object`'s forces: from its body's user force and
@@ -79,8 +81,15 @@ impl Stage<'_> {
             self.forced.push(object.0);
         }
         let body = &self.bodies[slot.body];
-        let (force, torque) = (body.user_force().into(), body.user_torque().into());
-        RunForces { object, force, torque, total: slot.hand_force.into(), pushed: false }
+        RunForces {
+            object,
+            force: body.user_force().into(),
+            torque: body.user_torque().into(),
+            total: slot.hand_force.into(),
+            pushed: false,
+            dynamic: body.is_dynamic(),
+            center_of_mass: body.center_of_mass(),
+        }
     }
 
     /// Writes the run of forces summed so far to its object's body and
