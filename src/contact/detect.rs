@@ -41,9 +41,9 @@ pub(crate) struct Detector {
     pub contact_offset: f32,
     /// A contact ends beyond this distance (m).
     pub release_offset: f32,
-    /// Per bone of the hand being searched: its reach, the bone's box
-    /// grown by the contact offset.
-    reach: Vec<(Bone, Aabb)>,
+    /// Per bone of the hand being searched (by [`Bone::index`]): its
+    /// reach, the bone's box grown by the contact offset.
+    reach: Vec<Aabb>,
     /// The penetration query's buffers ([`contact`]).
     epa: EPA,
 }
@@ -72,50 +72,36 @@ impl Detector {
     }
 
     /// Starts the search of one hand, posed `pose` (world): keeps each
-    /// bone's reach, its box grown by the contact offset, and returns the
-    /// whole hand's reach, the box to find objects near.
+    /// bone's reach, its box grown by the contact offset (world, m), by
+    /// [`Bone::index`], and returns them.
     #[inline(always)]
-    pub fn reach(&mut self, pose: &HandPose) -> Aabb {
+    pub fn reach(&mut self, pose: &HandPose) -> &[Aabb] {
         self.reach.clear();
-        let mut hand: Option<Aabb> = None;
         for bone in Bone::all() {
-            let reach = bone_aabb(&pose.bone(bone)).loosened(self.contact_offset);
-            hand = Some(hand.map_or(reach, |h| h.merged(&reach)));
-            self.reach.push((bone, reach));
+            self.reach.push(bone_aabb(&pose.bone(bone)).loosened(self.contact_offset));
         }
-        hand.unwrap_or_else(Aabb::new_invalid)
+        &self.reach
     }
 
-    /// The new touches of the hand [`Self::reach`] started, posed `pose`,
-    /// through the rest of the filter chain. `near` holds the objects whose
-    /// boxes meet the hand's reach, in index order, with their boxes;
-    /// `view(o)` is object `o` itself. `known[k]` has a bit (by
-    /// [`Bone::index`]) for each bone in contact with `near[k]` already:
-    /// those pairs are left out before their exact query. `touch` is
-    /// called for every bone whose surface is within the contact offset of
-    /// an object, in bone order, then object order.
+    /// The rest of the filter chain for `bone` of the hand [`Self::reach`]
+    /// started, posed `pose`, and an object whose box is `bounds` (world,
+    /// m): if the bone's reach meets that box, `object(())` is the object,
+    /// and the closest features if the bone's surface is within the
+    /// contact offset of it.
     #[inline(always)]
-    pub fn new_touches<'v>(
+    pub fn new_touch<'v>(
         &mut self,
         pose: &HandPose,
-        near: &[(usize, Aabb)],
-        known: &[u16],
-        view: impl Fn(usize) -> ObjectView<'v>,
-        mut touch: impl FnMut(Bone, &ObjectView<'v>, Proximity),
-    ) {
-        for (bone, reach) in &self.reach {
-            let bit = 1 << bone.index();
-            for (&(o, bounds), &known) in near.iter().zip(known) {
-                if known & bit != 0 || !reach.intersects(&bounds) {
-                    continue;
-                }
-                let object = view(o);
-                let now = pose.bone(*bone);
-                if let Some(prox) = within(&mut self.epa, &now, &object, self.contact_offset) {
-                    touch(*bone, &object, prox);
-                }
-            }
+        bone: Bone,
+        bounds: &Aabb,
+        object: impl FnOnce() -> ObjectView<'v>,
+    ) -> Option<(ObjectView<'v>, Proximity)> {
+        if !self.reach.get(bone.index())?.intersects(bounds) {
+            return None;
         }
+        let object = object();
+        let prox = within(&mut self.epa, &pose.bone(bone), &object, self.contact_offset)?;
+        Some((object, prox))
     }
 }
 

@@ -88,11 +88,13 @@ fn objects_added_or_put_down_touch_the_hand_in_their_first_step() {
     assert!(began(&world, far), "an object put down in the palm is touched at once");
 }
 
-/// Steps until the ball is within the contact offset of the palm (at most
-/// `steps`), asserting that it is touched then and not before.
+/// Steps until the ball is within the contact offset of the hand, its gap
+/// to the ball by `gap` (at most 400 steps), asserting that it is touched
+/// then and not before.
 fn touched_on_arrival(
     world: &mut InteractionWorld,
     pose: impl Fn(usize) -> HandPose,
+    gap: impl Fn(&InteractionWorld, &HandPose) -> f32,
     id: ObjectId,
 ) {
     let offset = world.config().contact_offset;
@@ -100,15 +102,15 @@ fn touched_on_arrival(
     for step in 0..400 {
         let pose = pose(step);
         world.set_hand_pose(hand, &pose).expect("a valid pose");
-        let before = gap(world, &pose, id);
+        let before = gap(world, &pose);
         world.step();
         if before <= offset {
-            assert!(began(world, id), "a ball {before} m from the palm was missed at step {step}");
+            assert!(began(world, id), "a ball {before} m from the hand was missed at step {step}");
             return;
         }
         assert!(!began(world, id), "touched {before} m away");
     }
-    panic!("the ball never came near the palm");
+    panic!("the ball never came near the hand");
 }
 
 #[test]
@@ -123,7 +125,8 @@ fn a_ball_drifting_into_a_still_hand_is_touched_on_arrival() {
     let body = world.object_body(id).expect("an object");
     let towards = pose.palm.rotation * -Vec3::Y * 0.37;
     world.physics_mut().bodies[body].set_linvel(towards, true);
-    touched_on_arrival(&mut world, |_| pose.clone(), id);
+    let from_palm = |world: &InteractionWorld, pose: &HandPose| gap(world, pose, id);
+    touched_on_arrival(&mut world, |_| pose.clone(), from_palm, id);
 }
 
 #[test]
@@ -136,5 +139,38 @@ fn a_hand_creeping_onto_a_resting_ball_touches_it_on_arrival() {
     world.step();
     let towards = pose.palm.rotation * Vec3::Y * 0.000_45;
     let moved = |step: usize| pose.transformed(Vec3::ZERO, Quat::IDENTITY, towards * step as f32);
-    touched_on_arrival(&mut world, moved, id);
+    let from_palm = |world: &InteractionWorld, pose: &HandPose| gap(world, pose, id);
+    touched_on_arrival(&mut world, moved, from_palm, id);
+}
+
+#[test]
+fn a_fingertip_bending_onto_a_ball_beside_a_still_hand_touches_it_on_arrival() {
+    // Only the index fingertip moves, 0.35 mm a step, towards a ball 17 mm
+    // off its pad. The little finger points 7 cm up, so the hand's box
+    // holds the fingertip's whole way: only the fingertip's own reach
+    // leaves the box its hand's answer was asked for.
+    let (mut world, mut pose) = open_hand(Vec3::new(0.07, 0.58, -0.09));
+    let towards = pose.palm.rotation * Vec3::Y;
+    let little = &mut pose.fingers[4][2];
+    little.b = little.a + towards * 0.07;
+    world.set_hand_pose(coulomb_hands::hand::HandId(0), &pose).expect("a valid pose");
+    let tip = pose.fingers[1][2];
+    let centre = tip.b + towards * (tip.radius + 0.015 + 0.017);
+    let id = world.add_object(&ball("beside", centre)).expect("a valid ball");
+    world.step();
+    let bent = |step: usize| {
+        let mut pose = pose.clone();
+        let tip = &mut pose.fingers[1][2];
+        let shift = towards * 0.000_35 * step as f32;
+        (tip.a, tip.b) = (tip.a + shift, tip.b + shift);
+        pose
+    };
+    let from_tip = |world: &InteractionWorld, pose: &HandPose| {
+        let tip = pose.fingers[1][2];
+        let axis = tip.b - tip.a;
+        let at = position(world, id);
+        let s = ((at - tip.a).dot(axis) / axis.length_squared()).clamp(0.0, 1.0);
+        (at - (tip.a + s * axis)).length() - tip.radius - 0.015
+    };
+    touched_on_arrival(&mut world, bent, from_tip, id);
 }

@@ -1,11 +1,11 @@
 //! Stage 3: new contacts begin where bones come within the contact offset.
 
+use super::near::Nearby;
 use super::{Candidate, StepScratch};
 use crate::contact::Contact;
-use crate::hand::HandId;
+use crate::hand::{Bone, HandId};
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::stability::StabilityScale;
-use rapier3d::parry::bounding_volume::Aabb;
 
 impl InteractionWorld {
     /// Begins a contact for every bone within the contact offset of an
@@ -31,38 +31,48 @@ impl InteractionWorld {
                 step.near.advance(margin, world.time, world.config.dt);
                 margin
             });
-            world.objects_near(h, &reach, margin, &mut step.near);
-            let near = &step.near.found;
-            known_bones(kept, near, hand, &mut step.near.known);
-            let view = |o| world.object_view(o, StabilityScale::NONE);
-            let known = &step.near.known;
-            step.detector.new_touches(pose, near, known, view, |bone, object, prox| {
-                let Some(motion) = world.motion(hand, bone) else { return };
-                let contact = Contact::begin(hand, bone, &prox, &motion, object, &settings);
+            world.pairs_near(h, reach, margin, &mut step.near);
+            let Nearby { answers, known, boxes, .. } = &mut step.near;
+            let Some(answer) = answers.get(h).and_then(Option::as_ref) else { continue };
+            known_bones(kept, &answer.objects, hand, known);
+            // In bone order, then object order, each pair through the rest
+            // of the collision driver's filter chain.
+            for &(b, i) in &answer.pairs {
+                let (bone, i) = (Bone::from_index(b as usize), i as usize);
+                if known[i] & 1 << bone.index() != 0 {
+                    continue;
+                }
+                let o = answer.objects[i];
+                let bounds = *boxes[i].get_or_insert_with(|| world.object_box(o));
+                let view = || world.object_view(o, StabilityScale::NONE);
+                let Some((object, prox)) = step.detector.new_touch(pose, bone, &bounds, view)
+                else {
+                    continue;
+                };
+                let Some(motion) = world.motion(hand, bone) else { continue };
+                let contact = Contact::begin(hand, bone, &prox, &motion, &object, &settings);
                 let proximity = Some(prox);
                 step.found.push(Candidate { contact, proximity });
-            });
+            }
         }
     }
 }
 
-/// For each object of `near` (in index order), which of `hand`'s bones
-/// touch it already, a bit per [`crate::hand::Bone::index`], into `known`: `contacts`
-/// are sorted by [`super::contact_key`], so one pass over both finds them.
+/// For each of `objects` (ascending), which of `hand`'s bones touch it
+/// already, a bit per [`Bone::index`], into `known`: `contacts` are sorted
+/// by [`super::contact_key`], so one pass over both finds them.
 #[inline(always)]
-fn known_bones(contacts: &[Contact], near: &[(usize, Aabb)], hand: HandId, known: &mut Vec<u16>) {
-    known.clear();
-    known.resize(near.len(), 0);
+fn known_bones(contacts: &[Contact], objects: &[usize], hand: HandId, known: &mut [u16]) {
     let mut k = 0;
     for c in contacts {
         let o = c.object.0 as usize;
-        while k < near.len() && near[k].0 < o {
+        while k < objects.len() && objects[k] < o {
             k += 1;
         }
-        if k == near.len() {
+        if k == objects.len() {
             break;
         }
-        if near[k].0 == o && c.hand == hand {
+        if objects[k] == o && c.hand == hand {
             known[k] |= 1 << c.bone.index();
         }
     }

@@ -1,24 +1,26 @@
-//! Which objects may be near a hand, found through rapier's broad phase (a
-//! BVH over every collider's box) rather than by a scan of every object, so
-//! the search grows with what is near the hands, not with the scene.
+//! Which bones of a hand may be near which objects, found through rapier's
+//! broad phase (a BVH over every collider's box) rather than by a scan of
+//! every object, so the search grows with what is near the hands, not with
+//! the scene.
 //!
 //! The BVH holds each collider's box as of rapier's last step, before that
 //! step moved it, loosened by half rapier's prediction distance. So a hand's
 //! box is looked up loosened by how far any awake object can have moved
-//! since ([`motion_margin`]), and the objects added or put down since then
-//! (which the BVH has not seen there) are added to what it finds. The exact
-//! boxes of those candidates then filter them as a scan of every object
-//! would: the same objects, in the same order, so the same contacts.
+//! since ([`InteractionWorld::motion_margin`]), and the objects added or
+//! put down since then (which the BVH has not seen there) are added to what
+//! it finds. Their exact boxes then pair them with the bones whose reach
+//! they may meet.
 //!
-//! One answer serves a hand for several steps: it is asked for the hand's
-//! box loosened by a slack, and kept while the hand's box, loosened by how
-//! far any object may have moved since (the margins of the steps between,
-//! summed), stays inside what it answered for. Objects added or put down,
-//! and a program's writes to rapier, make every hand ask again.
+//! One answer serves a hand for several steps: it pairs each bone with the
+//! objects whose boxes, loosened by a slack, met the bone's reach loosened
+//! by the same slack. It is kept while every bone's reach stays inside its
+//! loosened box and the objects have moved less than the slack since (the
+//! margins of the steps between, summed). Objects added or put down, and a
+//! program's writes to rapier, make every hand ask again.
 //!
-//! Invariant: every object whose box meets the hand's box is among the
-//! candidates. An object moved through [`InteractionWorld::physics_mut`] is
-//! outside it until rapier's next step, as for rapier's own scene queries.
+//! Invariant: every (bone, object) pair whose boxes meet is among the
+//! answer's pairs. An object moved through [`InteractionWorld::physics_mut`]
+//! is outside it until rapier's next step, as for rapier's own scene queries.
 
 use crate::pipeline::InteractionWorld;
 use crate::scene::ObjectId;
@@ -37,39 +39,40 @@ pub(super) fn tagged(user_data: u128, objects: usize) -> Option<usize> {
     (index < objects).then_some(index)
 }
 
-/// The objects near one hand, by index, with their boxes now (world, m).
-/// Buffers kept from step to step.
+/// How far (m) a bone's reach may move, and the objects, before its
+/// hand's answer is asked again. A hand moving at 1 m/s moves 1 mm a step
+/// at 1 kHz: one answer serves about five steps.
+const SLACK: f32 = 0.005;
+
+/// The bones and objects near each hand, kept from step to step.
 #[derive(Debug, Default)]
 pub(crate) struct Nearby {
-    /// Candidates from the BVH and the unindexed objects, sorted.
-    ids: Vec<usize>,
-    /// The candidates whose box meets the hand's, in index order.
-    pub found: Vec<(usize, Aabb)>,
-    /// Per object of `found`, the hand's bones touching it already, a bit
-    /// per [`crate::hand::Bone::index`] (`find.rs`).
-    pub known: Vec<u16>,
-    /// Per hand, its last broad-phase answer, while it may still serve.
-    answers: Vec<Option<Answer>>,
+    /// Per hand, its last answer, while it may still serve.
+    pub(super) answers: Vec<Option<Answer>>,
     /// The simulated time (s) at which the answers' drift was last
     /// advanced ([`Nearby::advance`]).
     advanced_at: Option<f64>,
+    /// The objects' boxes loosened by the slack, while an answer is asked.
+    grown: Vec<Aabb>,
+    /// This step's, for the hand being searched: per object of its answer,
+    /// the hand's bones touching it already (a bit per
+    /// [`crate::hand::Bone::index`]), and its box now, once computed.
+    pub(super) known: Vec<u16>,
+    pub(super) boxes: Vec<Option<Aabb>>,
 }
 
-/// How far beyond a hand's reach (m) its broad-phase query looks, so that
-/// one answer serves the next steps while the hand stays inside that box
-/// and the objects move less than what is left of it. A hand moving at
-/// 1 m/s moves 1 mm a step at 1 kHz: one answer serves about ten steps.
-const SLACK: f32 = 0.01;
-
-/// One hand's broad-phase answer, kept from step to step.
-#[derive(Debug)]
-struct Answer {
-    /// The box it answers for (world, m): every object whose box met it
-    /// when it was asked is among `ids`.
-    reach: Aabb,
-    /// Those candidates, sorted.
-    ids: Vec<usize>,
-    /// How far any object may have moved since (m).
+/// One hand's bone–object pairs that may meet ([`Nearby`]).
+#[derive(Debug, Default)]
+pub(crate) struct Answer {
+    /// Per bone (by [`crate::hand::Bone::index`]), the box its reach may
+    /// move in (world, m).
+    bones: Vec<Aabb>,
+    /// The objects the broad phase found, ascending.
+    pub objects: Vec<usize>,
+    /// The pairs, as (bone index, place in `objects`), by bone, then
+    /// object.
+    pub pairs: Vec<(u8, u32)>,
+    /// How far any object may have moved since it was asked (m).
     drift: f32,
 }
 
@@ -100,13 +103,14 @@ impl Nearby {
         }
     }
 
-    /// Whether hand `h`'s answer from an earlier step still holds every
-    /// object whose box may meet `hand` (world, m): `hand`, loosened by how
-    /// far any object may have moved since, is inside the box it answered
-    /// for.
-    fn serves(&self, h: usize, hand: &Aabb) -> bool {
-        let answer = self.answers.get(h).and_then(Option::as_ref);
-        answer.is_some_and(|a| a.reach.contains(&hand.loosened(a.drift)))
+    /// Hand `h`'s answer, if it still holds every pair of its bones, whose
+    /// reach boxes are `reach` (world, m, by bone index), and objects whose
+    /// boxes may meet: the objects have moved less than the slack since it
+    /// was asked, and each reach is inside the box it answered for.
+    fn serving(&self, h: usize, reach: &[Aabb]) -> Option<&Answer> {
+        let answer = self.answers.get(h)?.as_ref()?;
+        let inside = answer.bones.iter().zip(reach).all(|(within, now)| within.contains(now));
+        (answer.drift <= SLACK && answer.bones.len() == reach.len() && inside).then_some(answer)
     }
 }
 
@@ -127,74 +131,72 @@ impl InteractionWorld {
         if margin.is_finite() { margin } else { f32::INFINITY }
     }
 
-    /// Fills `near.found` with the objects whose boxes meet hand `h`'s box
-    /// `hand` (world), in index order, given this step's
-    /// [`Self::motion_margin`], after [`Nearby::advance`].
-    pub(super) fn objects_near(&self, h: usize, hand: &Aabb, margin: f32, near: &mut Nearby) {
-        if !near.serves(h, hand) {
-            self.ask_broad_phase(h, hand, margin, near);
+    /// Makes `near.answers[h]` hand `h`'s pairs of bones and objects that
+    /// may meet, its bones' reach boxes being `reach` (world, m, by bone
+    /// index), given this step's [`Self::motion_margin`], after
+    /// [`Nearby::advance`]; and empties this step's `known` and `boxes`
+    /// for its objects.
+    pub(super) fn pairs_near(&self, h: usize, reach: &[Aabb], margin: f32, near: &mut Nearby) {
+        if near.serving(h, reach).is_none() {
+            self.ask_broad_phase(h, reach, margin, near);
         }
-        let colliders = &self.physics.colliders;
-        let bounds = |o: usize| colliders[self.objects[o].collider].compute_aabb();
-        let Nearby { ids, found, answers, .. } = near;
-        found.clear();
-        let Some(answer) = answers.get_mut(h).and_then(Option::as_mut) else {
-            // No answer kept: every object is a candidate.
-            for &o in ids.iter() {
-                let bounds = bounds(o);
-                if hand.intersects(&bounds) {
-                    found.push((o, bounds));
-                }
-            }
-            return;
-        };
-        // A candidate whose box is now outside the answer's box can meet
-        // the hand's only after moving farther than the answer allows: it
-        // is dropped from the answer.
-        let reach = answer.reach;
-        answer.ids.retain(|&o| {
-            let bounds = bounds(o);
-            if hand.intersects(&bounds) {
-                found.push((o, bounds));
-            }
-            bounds.intersects(&reach)
-        });
+        let objects = near.answers[h].as_ref().map_or(0, |a| a.objects.len());
+        near.known.clear();
+        near.known.resize(objects, 0);
+        near.boxes.clear();
+        near.boxes.resize(objects, None);
     }
 
-    /// Asks rapier's broad phase for the objects near hand `h`'s box `hand`
-    /// loosened by [`SLACK`], and keeps the answer for the next steps. With
-    /// a margin that bounds nothing, every object is a candidate, in
-    /// `near.ids`, and nothing is kept.
-    fn ask_broad_phase(&self, h: usize, hand: &Aabb, margin: f32, near: &mut Nearby) {
+    /// Object `o`'s box now (world, m).
+    pub(super) fn object_box(&self, o: usize) -> Aabb {
+        self.physics.colliders[self.objects[o].collider].compute_aabb()
+    }
+
+    /// Asks rapier's broad phase for the objects near hand `h`, whose
+    /// bones' reach boxes are `reach`, and pairs them with the bones: each
+    /// bone with the objects whose boxes, loosened by [`SLACK`], meet its
+    /// reach loosened by the same. With a margin that bounds nothing, every
+    /// object is a candidate, and the answer serves this step only.
+    fn ask_broad_phase(&self, h: usize, reach: &[Aabb], margin: f32, near: &mut Nearby) {
         let physics = &self.physics;
         let objects = self.objects.len();
         if near.answers.len() <= h {
             near.answers.resize_with(h + 1, || None);
         }
-        if !margin.is_finite() {
-            // A speed that bounds nothing: every object is a candidate.
-            near.answers[h] = None;
-            near.ids.clear();
-            near.ids.extend(0..objects);
-            return;
-        }
-        let reach = hand.loosened(SLACK);
-        let mut answer =
-            near.answers[h].take().unwrap_or(Answer { reach, ids: Vec::new(), drift: 0.0 });
-        let query = physics.broad_phase.as_query_pipeline(
-            physics.narrow_phase.query_dispatcher(),
-            &physics.bodies,
-            &physics.colliders,
-            QueryFilter::default(),
-        );
-        let found = query.intersect_aabb_conservative(reach.loosened(margin));
-        let ids = &mut answer.ids;
+        let mut answer = near.answers[h].take().unwrap_or_default();
+        answer.bones.clear();
+        answer.bones.extend(reach.iter().map(|r| r.loosened(SLACK)));
+        let ids = &mut answer.objects;
         ids.clear();
-        ids.extend(found.filter_map(|(_, collider)| tagged(collider.user_data, objects)));
-        ids.extend(self.unindexed.iter().map(|&o| o as usize));
-        ids.sort_unstable();
-        ids.dedup();
-        (answer.reach, answer.drift) = (reach, 0.0);
+        if margin.is_finite() {
+            let hand = answer.bones.iter().fold(Aabb::new_invalid(), |h, b| h.merged(b));
+            let query = physics.broad_phase.as_query_pipeline(
+                physics.narrow_phase.query_dispatcher(),
+                &physics.bodies,
+                &physics.colliders,
+                QueryFilter::default(),
+            );
+            let found = query.intersect_aabb_conservative(hand.loosened(SLACK + margin));
+            ids.extend(found.filter_map(|(_, collider)| tagged(collider.user_data, objects)));
+            ids.extend(self.unindexed.iter().map(|&o| o as usize));
+            ids.sort_unstable();
+            ids.dedup();
+            answer.drift = 0.0;
+        } else {
+            // A speed that bounds nothing: every object is a candidate.
+            ids.extend(0..objects);
+            answer.drift = f32::INFINITY;
+        }
+        near.grown.clear();
+        near.grown.extend(ids.iter().map(|&o| self.object_box(o).loosened(SLACK)));
+        answer.pairs.clear();
+        for (b, within) in answer.bones.iter().enumerate() {
+            for (i, bounds) in near.grown.iter().enumerate() {
+                if within.intersects(bounds) {
+                    answer.pairs.push((b as u8, i as u32));
+                }
+            }
+        }
         near.answers[h] = Some(answer);
     }
 }
