@@ -15,7 +15,7 @@
 //! [`Vec3Lanes::len`], [`Vec3Lanes::valid`] masks them out, and a caller
 //! given whole chunks is given [`Vec3Lanes::used`] with each.
 
-use glam::{Mat3, Vec3, Vec3A};
+use glam::{Mat3, Vec3, Vec3A, Vec4};
 use wide::f32x4;
 
 /// Items per chunk.
@@ -98,8 +98,10 @@ impl Vec3Lanes {
     pub fn copy_to(&self, out: &mut Vec<Vec3>) {
         out.resize(self.len, Vec3::ZERO);
         for (items, chunk) in out.chunks_mut(LANES).zip(&self.chunks) {
-            for (k, item) in items.iter_mut().enumerate() {
-                *item = lane(chunk, k);
+            let vectors = f32x4::transpose([chunk[0], chunk[1], chunk[2], chunk[2]]);
+            for (item, v) in items.iter_mut().zip(vectors) {
+                let [x, y, z, _] = v.to_array();
+                *item = Vec3::new(x, y, z);
             }
         }
     }
@@ -235,9 +237,10 @@ const LANE_MASKS: [[f32; LANES]; 1 << LANES] = {
 /// the sums, and so the bits, of a loop over them.
 #[inline]
 pub(crate) fn add_in_order(sum: &mut Vec3A, c: &Chunk) {
-    let [x, y, z] = c.map(|v| v.to_array());
-    for k in 0..LANES {
-        *sum += Vec3A::new(x[k], y[k], z[k]);
+    // Four vectors from the three lanes, by one transpose (the fourth
+    // lane of each, z again, is never read).
+    for v in f32x4::transpose([c[0], c[1], c[2], c[2]]) {
+        *sum += Vec3A::from_vec4(Vec4::from_array(v.to_array()));
     }
 }
 
