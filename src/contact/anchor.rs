@@ -120,10 +120,27 @@ impl BoneAnchor {
         match (self, bone) {
             (BoneAnchor::Capsule { dir_in_palm, .. }, BoneShape::Capsule(c)) => {
                 let now = palm.rotation.inverse() * (c.b - c.a).normalize_or_zero();
-                palm.rotation * Quat::from_rotation_arc(dir_in_palm, now)
+                palm.rotation * rotation_arc(dir_in_palm, now)
             }
             _ => palm.rotation,
         }
+    }
+}
+
+/// glam's `Quat::from_rotation_arc`, step for step, so the same bits (a
+/// unit test compares them): glam's is not `#[inline]`, so each call left
+/// the AVX2 build of the contact stages for the baseline one.
+#[inline(always)]
+fn rotation_arc(from: Vec3, to: Vec3) -> Quat {
+    const ONE_MINUS_EPS: f32 = 1.0 - 2.0 * f32::EPSILON;
+    let dot = from.dot(to);
+    if dot > ONE_MINUS_EPS {
+        Quat::IDENTITY
+    } else if dot < -ONE_MINUS_EPS {
+        Quat::from_axis_angle(from.any_orthonormal_vector(), std::f32::consts::PI)
+    } else {
+        let c = from.cross(to);
+        Quat::from_xyzw(c.x, c.y, c.z, 1.0 + dot).normalize()
     }
 }
 
@@ -297,6 +314,36 @@ impl Anchor {
             let ci = pose.transform_point(samples.object.get(i)) + shift;
             let on_surface = surface::project_to_surface(object.shape, pose, ci);
             samples.object.set(i, pose.inverse_transform_point(on_surface));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_inlined_rotation_arc_has_glam_s_bits() {
+        // Directions all round, and pairs within a hair of parallel and of
+        // opposite, where glam's two special cases begin.
+        let dir = |i: u32| {
+            let (a, b) = (i as f32 * 0.7131, i as f32 * 1.3177 + 0.29);
+            Vec3::new(a.cos() * b.sin(), a.sin() * b.sin(), b.cos()).normalize()
+        };
+        let mut pairs = Vec::new();
+        for i in 0..300 {
+            let (from, to) = (dir(i), dir(i * 7 + 3));
+            let tilt = (to - from.dot(to) * from).normalize_or_zero();
+            for t in [0.0, 1e-4, 3e-4, 1e-3, 0.05] {
+                pairs.push((from, to));
+                pairs.push((from, (from + t * tilt).normalize()));
+                pairs.push((from, (-from + t * tilt).normalize()));
+            }
+        }
+        let bits = |q: Quat| q.to_array().map(f32::to_bits);
+        for (from, to) in pairs {
+            let glam = Quat::from_rotation_arc(from, to);
+            assert_eq!(bits(rotation_arc(from, to)), bits(glam), "{from} to {to}");
         }
     }
 }

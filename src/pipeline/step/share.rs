@@ -62,23 +62,27 @@ fn side_key(c: &Contact) -> SideKey {
 #[inline(always)]
 fn share_by_side(keys: &[SideKey], presses: &[Press], order: &mut Vec<usize>, shares: &mut [f32]) {
     let key = |i: usize| keys[i];
-    let pressing = |i: usize| Some(presses[i]).filter(|p| p.seen > 0.0);
     order.clear();
-    order.extend((0..keys.len()).filter(|&i| pressing(i).is_some()));
+    for (i, press) in presses.iter().enumerate() {
+        if press.seen > 0.0 {
+            order.push(i);
+        }
+    }
     // By key, then by index: equal keys keep the contacts' own order (the
     // same sums in the same order every run), as a stable sort would keep
-    // them, without its scratch allocation.
-    order.sort_unstable_by_key(|&i| (key(i), i));
+    // them, without its scratch allocation. Kept contacts come sorted by
+    // key, so a step that found none needs no sort.
+    if !order.is_sorted_by_key(|&i| (key(i), i)) {
+        order.sort_unstable_by_key(|&i| (key(i), i));
+    }
     for group in order.chunk_by(|&a, &b| key(a) == key(b)) {
         if group.len() < 2 {
             continue;
         }
         for &i in group {
-            let Some(own) = pressing(i) else { continue };
-            let sides = friction::sides(
-                own.normal(),
-                group.iter().filter_map(|&j| pressing(j)).map(|p| (p.normal(), p.seen)),
-            );
+            let own = &presses[i];
+            let pressing = group.iter().map(|&j| (presses[j].normal(), presses[j].seen));
+            let sides = friction::sides(own.normal(), pressing);
             shares[i] = friction::virtual_finger_factor(own.seen, &sides);
         }
     }
