@@ -11,7 +11,7 @@
 //!
 //! What the padding lanes of the last chunk hold is unspecified (zeros in a
 //! new chunk, a buffer's earlier items in a reused one) and never read:
-//! [`Vec3Lanes::for_each`] and [`Vec3Lanes::sum`] stop at
+//! [`Vec3Lanes::sum`] and [`Vec3Lanes::copy_to`] stop at
 //! [`Vec3Lanes::len`], [`Vec3Lanes::valid`] masks them out, and a caller
 //! given whole chunks is given [`Vec3Lanes::used`] with each.
 
@@ -82,17 +82,6 @@ impl Vec3Lanes {
         (0..self.len).map(|i| self.get(i))
     }
 
-    /// Calls `f` with each item, in order: a loop over whole chunks, much
-    /// cheaper than [`Self::iter`] on a hot path.
-    #[inline]
-    pub fn for_each(&self, mut f: impl FnMut(Vec3)) {
-        for (j, chunk) in self.chunks.iter().enumerate() {
-            for k in 0..self.used(j) {
-                f(lane(chunk, k));
-            }
-        }
-    }
-
     /// Sets `out` to the items, in order, reusing its buffer.
     #[inline(always)]
     pub fn copy_to(&self, out: &mut Vec<Vec3>) {
@@ -130,11 +119,18 @@ impl Vec3Lanes {
         &mut self.chunks
     }
 
-    /// The sum of the items, added in order from zero, as glam's `Sum`.
+    /// The sum of the items, added in order from zero, as glam's `Sum`: a
+    /// whole chunk by one transpose ([`add_in_order`]), a padded one lane
+    /// by lane.
     pub fn sum(&self) -> Vec3 {
-        let mut sum = Vec3::ZERO;
-        self.for_each(|v| sum += v);
-        sum
+        let mut sum = Vec3A::ZERO;
+        for (j, chunk) in self.chunks.iter().enumerate() {
+            match self.used(j) {
+                LANES => add_in_order(&mut sum, chunk),
+                used => (0..used).for_each(|k| sum += Vec3A::from(lane(chunk, k))),
+            }
+        }
+        sum.into()
     }
 
     /// Which lanes of chunk `j` hold items: a mask of all ones for those.

@@ -33,10 +33,13 @@
 
 pub(crate) mod anchor;
 pub(crate) mod detect;
+mod deviation;
 pub mod event;
 pub(crate) mod lanes;
 pub mod patch;
 pub mod surface;
+#[cfg(target_arch = "x86_64")]
+mod wide8;
 
 pub use event::{ContactEvent, ContactEventKind};
 

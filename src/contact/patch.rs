@@ -9,10 +9,10 @@
 //! stabilising effect the thesis reports for 9 samples over 1.
 
 use super::anchor::Anchor;
-use super::lanes::{self, Chunk, LANES, Vec3Lanes};
+use super::lanes::{self, Chunk, Vec3Lanes};
 use super::surface;
 use super::{LawSettings, ObjectView};
-use crate::friction::{FrictionCoefficients, slipped_stretch, static_stretch_squared};
+use crate::friction::FrictionCoefficients;
 use glam::{Mat3, Vec3};
 use wide::f32x4;
 
@@ -229,7 +229,7 @@ fn lane_push_only(forces: &mut Vec3Lanes, n: Vec3) {
 /// A damper `damping` (N·s/m) on a spring `gamma` (N/m) folded into the
 /// spring as extra stretch per unit rate, `c/γ` (s).
 #[inline]
-fn damping_lag(damping: f32, gamma: f32) -> f32 {
+pub(super) fn damping_lag(damping: f32, gamma: f32) -> f32 {
     if gamma > 0.0 { damping / gamma } else { 0.0 }
 }
 
@@ -257,15 +257,18 @@ pub(crate) struct PatchStep {
 /// Buffers reused from step to step.
 #[derive(Debug, Default)]
 pub(crate) struct PatchScratch {
-    deviations: Vec3Lanes,
+    pub(super) deviations: Vec3Lanes,
     /// The last spread contact's forces on the object (N), per sample.
     forces: Vec3Lanes,
     /// Its samples' points (world, m).
-    points: Vec3Lanes,
+    pub(super) points: Vec3Lanes,
     /// Whether `forces` and `points` are the last contact's: cleared
     /// without emptying the buffers, so the next patch of the same size
     /// reuses them as they are.
     applied: bool,
+    /// Whether the contact stages run in their AVX2 build, set by it
+    /// alone: then the deviation springs take eight samples at a time.
+    pub(crate) avx2: bool,
 }
 
 impl PatchScratch {
@@ -315,7 +318,7 @@ pub(crate) fn spread(
         scratch.points.chunks_mut()[j] = ci;
     }
     if step.deviation_springs {
-        deviate(step, samples, object, scratch);
+        super::deviation::deviate(step, samples, object, scratch);
     } else {
         // The thesis's patch: each sample carries f/N where it lies.
         scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);
@@ -324,69 +327,6 @@ pub(crate) fn spread(
     lane_forces(step.force, &scratch.deviations, step.gamma, &mut scratch.forces);
     lane_push_only(&mut scratch.forces, step.normal);
     scratch.applied = true;
-}
-
-/// Each sample's deviation `e_i` (m) from its skin point, relative to C:
-/// tangentially, slipped back to its own share of the cone where it is
-/// beyond it (its object point moves along the surface); plus the damping
-/// of its rate, folded in as extra stretch; normally, scaled to the
-/// [`Rocking`] spring. Samples that slip move their points in
-/// `scratch.points` and `samples.object`.
-#[inline(always)]
-fn deviate(
-    step: &PatchStep,
-    samples: &mut Samples,
-    object: &ObjectView,
-    scratch: &mut PatchScratch,
-) {
-    let pose = &object.pose;
-    let rocking = step.rocking;
-    let normal_limit = f32x4::splat(step.normal_force / rocking.stiffness);
-    let rock = f32x4::splat(rocking.stiffness / step.gamma);
-    let rocking_lag = f32x4::splat(rocking.lag);
-    // Damping of the deviations, folded in as extra stretch c/γ · ė.
-    let lag = f32x4::splat(damping_lag(step.damping, step.gamma));
-    let cone = f32x4::splat(static_stretch_squared(step.normal_force, step.mu, step.gamma));
-    let (c, n) = (lanes::splat(step.center), lanes::splat(step.normal));
-    let angvel = lanes::splat(object.angvel);
-    let (skin_rot, skin_rate) = (lanes::splat_mat(&step.skin), lanes::splat_mat(&step.skin_rate));
-    for j in 0..samples.object.chunks().len() {
-        let skin = samples.skin.chunks()[j];
-        let mut ci = scratch.points.chunks()[j];
-        let rest = lanes::add(c, lanes::mat_mul(&skin_rot, skin));
-        let e = lanes::sub(ci, rest);
-        let e_dot_n = lanes::dot(e, n);
-        let e_n =
-            if rocking.clamped { e_dot_n.fast_clamp(-normal_limit, normal_limit) } else { e_dot_n };
-        let mut e_t = lanes::sub(e, lanes::scale(e_dot_n, n));
-        let slipping = lanes::dot(e_t, e_t).simd_gt(cone) & samples.object.valid(j);
-        if slipping.any() {
-            // Those samples slip: their object points move along the surface.
-            let mask = slipping.to_bitmask();
-            for k in (0..LANES).filter(|k| mask & (1 << k) != 0) {
-                let slipped =
-                    slipped_stretch(lanes::lane(&e_t, k), step.normal_force, step.mu, step.gamma);
-                let e_n_k = e_n.as_array()[k];
-                let target = lanes::lane(&rest, k) + slipped + e_n_k * step.normal;
-                let moved = surface::project_to_surface(object.shape, pose, target);
-                samples.object.set(j * LANES + k, pose.inverse_transform_point(moved));
-                lanes::set_lane(&mut ci, k, moved);
-                lanes::set_lane(&mut e_t, k, slipped);
-            }
-            scratch.points.chunks_mut()[j] = ci;
-        }
-        let e_rate =
-            lanes::sub(lanes::cross(angvel, lanes::sub(ci, c)), lanes::mat_mul(&skin_rate, skin));
-        let rate_n = lanes::dot(e_rate, n);
-        let rate_t = lanes::sub(e_rate, lanes::scale(rate_n, n));
-        // Scaled so that γ/N times it is the rocking spring k/N on e_n.
-        let rocking_stretch = rock * (e_n + rocking_lag * rate_n);
-        let deviation = lanes::add(
-            lanes::add(e_t, lanes::scale(lag, rate_t)),
-            lanes::scale(rocking_stretch, n),
-        );
-        scratch.deviations.chunks_mut()[j] = deviation;
-    }
 }
 
 /// A patch's samples: per sample, its point in the object frame (m) and

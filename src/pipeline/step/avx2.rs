@@ -17,6 +17,8 @@ pub(super) fn enabled() -> bool {
 /// Stages 2 to 7 ([`super::inlined_contact_stages`]), built with AVX2.
 #[target_feature(enable = "avx2")]
 pub(super) fn contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
+    // The patches' deviation springs may take eight samples at a time.
+    step.patch.avx2 = true;
     super::inlined_contact_stages(world, step);
 }
 

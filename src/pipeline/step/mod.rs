@@ -133,6 +133,7 @@ fn contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
         // SAFETY: this CPU has AVX2, the one feature the build enables.
         return unsafe { avx2::contact_stages(world, step) };
     }
+    step.patch.avx2 = false;
     inlined_contact_stages(world, step);
 }
 
