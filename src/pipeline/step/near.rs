@@ -52,8 +52,10 @@ pub(crate) struct Nearby {
     /// The simulated time (s) at which the answers' drift was last
     /// advanced ([`Nearby::advance`]).
     advanced_at: Option<f64>,
-    /// The objects' boxes loosened by the slack, while an answer is asked.
+    /// The objects' boxes loosened by the slack, and their places among
+    /// the objects paired, while an answer is asked.
     grown: Vec<Aabb>,
+    slots: Vec<u32>,
     /// This step's, for the hand being searched: per object of its answer,
     /// the hand's bones touching it already (a bit per
     /// [`crate::hand::Bone::index`]), and its box now, once computed.
@@ -67,7 +69,7 @@ pub(crate) struct Answer {
     /// Per bone (by [`crate::hand::Bone::index`]), the box its reach may
     /// move in (world, m).
     bones: Vec<Aabb>,
-    /// The objects the broad phase found, ascending.
+    /// The objects paired with a bone, ascending.
     pub objects: Vec<usize>,
     /// The pairs, as (bone index, place in `objects`), by bone, then
     /// object.
@@ -190,12 +192,28 @@ impl InteractionWorld {
         near.grown.clear();
         near.grown.extend(ids.iter().map(|&o| self.object_box(o).loosened(SLACK)));
         answer.pairs.clear();
+        near.slots.clear();
+        near.slots.resize(ids.len(), u32::MAX);
         for (b, within) in answer.bones.iter().enumerate() {
             for (i, bounds) in near.grown.iter().enumerate() {
                 if within.intersects(bounds) {
+                    near.slots[i] = 0;
                     answer.pairs.push((b as u8, i as u32));
                 }
             }
+        }
+        // Only the objects paired are kept, renumbered in order, so that a
+        // step's work grows with the pairs, not with the objects nearby.
+        let mut kept = 0;
+        for (i, slot) in near.slots.iter_mut().enumerate() {
+            if *slot == 0 {
+                (ids[kept], *slot) = (ids[i], kept as u32);
+                kept += 1;
+            }
+        }
+        ids.truncate(kept);
+        for (_, i) in answer.pairs.iter_mut() {
+            *i = near.slots[*i as usize];
         }
         near.answers[h] = Some(answer);
     }
