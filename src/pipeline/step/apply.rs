@@ -22,6 +22,9 @@ pub(super) struct RunForces {
     /// Whether rapier moves the body, and its centre of mass (world, m),
     /// which the torques are taken about.
     dynamic: bool,
+    /// Whether the total is the force, bit for bit, at the end of the run
+    /// ([`sums_alike`]): then it is not summed apart.
+    alike: bool,
     center_of_mass: Vec3,
 }
 
@@ -48,7 +51,7 @@ impl Stage<'_> {
                 self.start_run(object)
             }
         };
-        let RunForces { mut force, mut torque, mut total, mut pushed, dynamic, .. } = run;
+        let RunForces { mut force, mut torque, mut total, mut pushed, dynamic, alike, .. } = run;
         if let Some((forces, points)) = self.patch.applied() {
             let origin = lanes::splat(run.center_of_mass);
             for (j, (f, q)) in forces.chunks().iter().zip(points.chunks()).enumerate() {
@@ -58,7 +61,9 @@ impl Stage<'_> {
                 let finite = firewall::forces(f, q) & forces.used_mask(j);
                 // Eq. 3.10 (`friction::total_force`) over the forces the
                 // firewall passed: only finite ones are summed.
-                lanes::add_in_order(&mut total, &lanes::keep(f, finite));
+                if !alike {
+                    lanes::add_in_order(&mut total, &lanes::keep(f, finite));
+                }
                 let pushing = if dynamic { finite & lanes::nonzero(f) } else { 0 };
                 if pushing != 0 {
                     let torques = lanes::cross(lanes::sub(*q, origin), *f);
@@ -67,6 +72,9 @@ impl Stage<'_> {
                     pushed = true;
                 }
             }
+        }
+        if alike {
+            total = force;
         }
         self.run = Some(RunForces { force, torque, total, pushed, ..run });
     }
@@ -81,13 +89,15 @@ impl Stage<'_> {
             self.forced.push(object.0);
         }
         let body = &self.bodies[slot.body];
+        let (force, total, dynamic) = (body.user_force(), slot.hand_force, body.is_dynamic());
         RunForces {
             object,
-            force: body.user_force().into(),
+            force: force.into(),
             torque: body.user_torque().into(),
-            total: slot.hand_force.into(),
+            total: total.into(),
             pushed: false,
-            dynamic: body.is_dynamic(),
+            dynamic,
+            alike: dynamic && sums_alike(force, total),
             center_of_mass: body.center_of_mass(),
         }
     }
@@ -108,5 +118,47 @@ impl Stage<'_> {
             body.add_torque(run.torque.into(), false);
             body.wake_up(true);
         }
+    }
+}
+
+/// Whether a run's total (every finite sample) and force (the finite
+/// samples that are not zero, on a dynamic body) end with the same bits,
+/// starting from `force` and `total`: when they start with the same bits,
+/// none of them −0. Then no partial sum is ever −0 (in round-to-nearest,
+/// `x + y` is −0 only for `x` and `y` both −0), and adding a zero vector to
+/// a sum that is not −0 changes none of its bits: so skipping the zero
+/// samples, as the force does, changes nothing.
+fn sums_alike(force: Vec3, total: Vec3) -> bool {
+    let (force, total) = (force.to_array().map(f32::to_bits), total.to_array().map(f32::to_bits));
+    force == total && !force.contains(&(-0.0f32).to_bits())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sums_that_start_alike_end_alike_with_the_zero_samples_skipped() {
+        // Forces with zero vectors among them, signed zeros included, and
+        // components that cancel exactly.
+        let forces = [
+            Vec3::new(0.25, -0.0, 1e-3),
+            Vec3::new(-0.0, -0.0, -0.0),
+            Vec3::new(-0.25, 0.0, -1e-3),
+            Vec3::new(0.0, -0.0, 0.0),
+            Vec3::new(3e-7, -2.5, -0.0),
+        ];
+        for start in [Vec3::ZERO, Vec3::new(0.5, 0.0, -7e-3)] {
+            assert!(sums_alike(start, start));
+            let total = forces.iter().fold(start, |sum, f| sum + *f);
+            let pushing = forces.iter().filter(|f| **f != Vec3::ZERO);
+            let force = pushing.fold(start, |sum, f| sum + *f);
+            let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+            assert_eq!(bits(total), bits(force), "from {start}");
+        }
+        // A −0 start could end otherwise (−0 + 0 is +0), so it is not alike.
+        let negative = Vec3::new(-0.0, 1.0, 0.0);
+        assert!(!sums_alike(negative, negative));
+        assert!(!sums_alike(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e-9)));
     }
 }
