@@ -7,7 +7,7 @@ use super::surface::{self, SurfacePoint};
 use super::{BoneMotion, ObjectView, patch};
 use crate::friction::FrictionCoefficients;
 use crate::hand::{Bone, BoneShape, Palm, SkinClass};
-use glam::{Quat, Vec3};
+use glam::{Mat3, Quat, Vec3};
 
 /// A contact's anchors.
 #[derive(Debug, Clone)]
@@ -27,6 +27,10 @@ pub(crate) struct Anchor {
     /// The penetration depth the force saw last step (m), for the
     /// penetration-speed limit.
     pub limited_depth: f32,
+    /// The skin frame's rotation this anchor was last spread with, as a
+    /// matrix, and the mark of the hand pose it came from
+    /// ([`super::BoneMotion::marks`]).
+    pub skin: Option<(u64, Mat3)>,
 }
 
 /// The material point of the bone that the contact holds on to.
@@ -125,6 +129,23 @@ impl BoneAnchor {
             _ => palm.rotation,
         }
     }
+}
+
+/// Whether every skin frame is computed anew, none kept ([`Anchor::skin`]):
+/// only where a test asks for it (`run/scenario/builds.rs`), which
+/// compares the two.
+#[inline(always)]
+pub(crate) fn computing_frames_anew() -> bool {
+    #[cfg(test)]
+    return FRAMES_ANEW.get();
+    #[cfg(not(test))]
+    false
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Set: this thread's contacts compute every skin frame anew.
+    pub(crate) static FRAMES_ANEW: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// glam's `Quat::from_rotation_arc`, step for step, so the same bits (a
@@ -247,6 +268,7 @@ impl Anchor {
             radius,
             rigid: planar && bone_anchor.is_flat(),
             limited_depth: 0.0,
+            skin: None,
         }
     }
 
@@ -310,6 +332,8 @@ impl Anchor {
             samples.skin.set(i, carry * samples.skin.get(i));
         }
         self.bone = bone_anchor;
+        // A frame computed for the old anchor does not serve the new one.
+        self.skin = None;
         for i in 0..samples.len() {
             let ci = pose.transform_point(samples.object.get(i)) + shift;
             let on_surface = surface::project_to_surface(object.shape, pose, ci);

@@ -95,6 +95,9 @@ pub(crate) struct BoneMotion<'h> {
     pub bone: Bone,
     pub pose: &'h HandPose,
     pub prev_pose: &'h HandPose,
+    /// Which poses they are (`HandSlot`'s marks): what was computed from
+    /// one pose holds for another of the same mark.
+    pub marks: [u64; 2],
 }
 
 impl BoneMotion<'_> {
@@ -378,8 +381,16 @@ impl Contact {
         } else {
             patch::Rocking::soft(object)
         };
-        let skin = Mat3::from_quat(anchor.bone.rotation(motion.now(), motion.palm_now()));
-        let skin_before = Mat3::from_quat(anchor.bone.rotation(motion.prev(), motion.palm_prev()));
+        // The skin frame kept from the last spread serves for a pose of its
+        // mark: the pose one step ago after a step, or now while the hand
+        // holds its pose.
+        let [now, before] = motion.marks;
+        let frame = |mark: u64, shape, palm| match anchor.skin {
+            Some((kept, frame)) if kept == mark && !anchor::computing_frames_anew() => frame,
+            _ => Mat3::from_quat(anchor.bone.rotation(shape, palm)),
+        };
+        let skin = frame(now, motion.now(), motion.palm_now());
+        let skin_before = frame(before, motion.prev(), motion.palm_prev());
         let step = patch::PatchStep {
             center: site.c,
             normal: site.surface_n,
@@ -393,6 +404,7 @@ impl Contact {
             rocking,
             deviation_springs: settings.deviation_springs,
         };
+        self.anchor.skin = Some((now, skin));
         patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
         self.point = site.c;
         self.normal = site.n;

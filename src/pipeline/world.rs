@@ -85,6 +85,10 @@ pub(super) struct HandSlot {
     pub pose: Option<HandPose>,
     /// The pose of the previous step, for bone velocities.
     pub prev: Option<HandPose>,
+    /// Which pose `pose` is, and which `prev`: a count of the poses set,
+    /// so that what was computed from a pose is known to hold for it.
+    pub pose_mark: u64,
+    pub prev_mark: u64,
 }
 
 /// A rapier world plus hands that act on its objects only through Coulomb
@@ -271,7 +275,7 @@ impl InteractionWorld {
 
     /// Adds a hand with no pose yet (untracked).
     pub fn add_hand(&mut self, side: Side) -> HandId {
-        self.hands.push(HandSlot { side, pose: None, prev: None });
+        self.hands.push(HandSlot { side, pose: None, prev: None, pose_mark: 0, prev_mark: 0 });
         self.record(|| Call::AddHand(side));
         HandId(self.hands.len() as u32 - 1)
     }
@@ -283,6 +287,7 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         firewall::pose(hand.0, pose)?;
         slot.pose = Some(pose.clone());
+        slot.pose_mark += 1;
         self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
         Ok(())
     }
@@ -292,6 +297,7 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         slot.pose = None;
         slot.prev = None;
+        slot.pose_mark += 1;
         self.record(|| Call::ClearHandPose(hand.0));
         Ok(())
     }

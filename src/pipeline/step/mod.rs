@@ -98,6 +98,7 @@ impl InteractionWorld {
         self.time += self.config.dt as f64;
         for hand in self.hands.iter_mut() {
             hand.prev = hand.pose.clone();
+            hand.prev_mark = hand.pose_mark;
         }
     }
 
@@ -187,8 +188,12 @@ fn view_of<'c>(
 fn motion_of(hands: &[HandSlot], hand: HandId, bone: Bone) -> Option<BoneMotion<'_>> {
     let slot = hands.get(hand.0 as usize)?;
     let pose = slot.pose.as_ref()?;
-    let prev_pose = slot.prev.as_ref().unwrap_or(pose);
-    Some(BoneMotion { bone, pose, prev_pose })
+    let (prev_pose, prev_mark) = match &slot.prev {
+        Some(prev) => (prev, slot.prev_mark),
+        None => (pose, slot.pose_mark),
+    };
+    let marks = [slot.pose_mark, prev_mark];
+    Some(BoneMotion { bone, pose, prev_pose, marks })
 }
 
 /// Records a contact's event at `time` (s).

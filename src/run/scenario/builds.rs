@@ -1,6 +1,8 @@
 //! Both builds of a step's contact stages (`pipeline/step/avx2.rs`) give
-//! the same bits, on shipped scenarios.
+//! the same bits, on shipped scenarios; and so do skin frames kept from
+//! step to step (`contact/anchor.rs`, `Anchor::skin`) and computed anew.
 
+use crate::contact::anchor::FRAMES_ANEW;
 use crate::friction::FrictionState;
 use crate::pipeline::InteractionWorld;
 use crate::pipeline::step::BASELINE_ONLY;
@@ -38,15 +40,31 @@ impl Observer for Bits {
     }
 }
 
-/// A shipped scenario's bits, with the AVX2 build or the baseline.
-fn run(name: &str, baseline: bool) -> Bits {
-    BASELINE_ONLY.set(baseline);
+/// How a run is built.
+#[derive(Clone, Copy)]
+enum Build {
+    /// As shipped: the AVX2 build where the CPU has it.
+    Shipped,
+    /// The baseline build.
+    Baseline,
+    /// Every skin frame computed anew.
+    FramesAnew,
+}
+
+/// A shipped scenario's bits, as `build` builds it.
+fn run(name: &str, build: Build) -> Bits {
+    BASELINE_ONLY.set(matches!(build, Build::Baseline));
+    FRAMES_ANEW.set(matches!(build, Build::FramesAnew));
     let mut bits = Bits::default();
     let report = Scenario::find(name).unwrap().run(&mut [&mut bits]);
     BASELINE_ONLY.set(false);
+    FRAMES_ANEW.set(false);
     assert!(report.unwrap().passed, "{name} failed");
     bits
 }
+
+/// Grasps, a slide down a slope, a spin and a handover.
+const SCENARIOS: [&str; 3] = ["slide-slippery", "spin-one-hand", "handover"];
 
 /// Grasps, a slide down a slope, a spin and a handover: both builds give
 /// every force and pose the same bits, step by step.
@@ -56,9 +74,21 @@ fn avx2_and_baseline_builds_step_alike() {
         eprintln!("no AVX2 on this CPU: only the baseline build runs");
         return;
     }
-    for name in ["slide-slippery", "spin-one-hand", "handover"] {
-        let (avx2, baseline) = (run(name, false), run(name, true));
+    for name in SCENARIOS {
+        let (avx2, baseline) = (run(name, Build::Shipped), run(name, Build::Baseline));
         assert!(avx2.bits.len() > 10_000 && avx2.slipping > 0, "{name}: {avx2:?}");
         assert!(avx2 == baseline, "{name}: the builds differ");
+    }
+}
+
+/// The same scenarios, their hands moving, holding still and slipping
+/// (which re-anchors a contact's skin frame): skin frames kept from step
+/// to step give every force and pose the same bits as frames computed anew.
+#[test]
+fn kept_skin_frames_step_alike_with_frames_computed_anew() {
+    for name in SCENARIOS {
+        let (kept, anew) = (run(name, Build::Shipped), run(name, Build::FramesAnew));
+        assert!(kept.bits.len() > 10_000 && kept.slipping > 0, "{name}: {kept:?}");
+        assert!(kept == anew, "{name}: kept frames differ");
     }
 }
