@@ -27,6 +27,24 @@ fn ball(name: &str, at: Vec3) -> ObjectDesc {
     ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(0.03), 0.045, at) }
 }
 
+/// A ball `gap` (m) off the palm of a hand posed `pose`, added, stepped
+/// once, then sent towards the palm at `speed` (m/s).
+fn ball_towards_palm(
+    world: &mut InteractionWorld,
+    pose: &HandPose,
+    name: &str,
+    gap: f32,
+    speed: f32,
+) -> ObjectId {
+    let start = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + gap));
+    let id = world.add_object(&ball(name, start)).expect("a valid ball");
+    world.step();
+    let body = world.object_body(id).expect("an object");
+    let towards = pose.palm.rotation * -Vec3::Y * speed;
+    world.physics_mut().bodies[body].set_linvel(towards, true);
+    id
+}
+
 /// Whether the last step began a contact on `object`.
 fn began(world: &InteractionWorld, object: ObjectId) -> bool {
     world.events().iter().any(|e| e.object == object && e.kind == ContactEventKind::Began)
@@ -44,12 +62,7 @@ fn a_ball_thrown_faster_than_the_broad_phase_margin_is_caught_at_once() {
     // broad phase fattens its boxes, so its BVH has lost the ball by the
     // time it reaches the palm. Gaps of 361, 271, 181, 91, then 1 mm.
     let (mut world, pose) = open_hand(Vec3::new(0.1, 0.55, -0.2));
-    let start = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + 0.361));
-    let id = world.add_object(&ball("thrown", start)).expect("a valid ball");
-    world.step();
-    let body = world.object_body(id).expect("an object");
-    let towards = pose.palm.rotation * -Vec3::Y * 90.0;
-    world.physics_mut().bodies[body].set_linvel(towards, true);
+    let id = ball_towards_palm(&mut world, &pose, "thrown", 0.361, 90.0);
     let offset = world.config().contact_offset;
     for _ in 0..8 {
         let before = gap(&world, &pose, id);
@@ -119,12 +132,7 @@ fn a_ball_drifting_into_a_still_hand_is_touched_on_arrival() {
     // step: the ball, 23 mm out at 0.37 m/s, must still be found when it
     // arrives, some 60 steps later.
     let (mut world, pose) = open_hand(Vec3::new(0.04, 0.61, 0.12));
-    let start = pose.palm.to_world(Vec3::Y * (pose.palm.half_extents.y + 0.015 + 0.023));
-    let id = world.add_object(&ball("drifting", start)).expect("a valid ball");
-    world.step();
-    let body = world.object_body(id).expect("an object");
-    let towards = pose.palm.rotation * -Vec3::Y * 0.37;
-    world.physics_mut().bodies[body].set_linvel(towards, true);
+    let id = ball_towards_palm(&mut world, &pose, "drifting", 0.023, 0.37);
     let from_palm = |world: &InteractionWorld, pose: &HandPose| gap(world, pose, id);
     touched_on_arrival(&mut world, |_| pose.clone(), from_palm, id);
 }

@@ -142,7 +142,8 @@ impl InteractionWorld {
         if near.serving(h, reach).is_none() {
             self.ask_broad_phase(h, reach, margin, near);
         }
-        let objects = near.answers[h].as_ref().map_or(0, |a| a.objects.len());
+        let answer = near.answers.get(h).and_then(Option::as_ref);
+        let objects = answer.map_or(0, |a| a.objects.len());
         near.known.clear();
         near.known.resize(objects, 0);
         near.boxes.clear();
