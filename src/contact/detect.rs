@@ -85,7 +85,7 @@ impl Detector {
 
     /// The rest of the filter chain for `bone` of the hand [`Self::reach`]
     /// started, posed `pose`, and an object whose box is `bounds` (world,
-    /// m): if the bone's reach meets that box, `object(())` is the object,
+    /// m): if the bone's reach meets that box, `object()` is the object,
     /// and the closest features if the bone's surface is within the
     /// contact offset of it.
     #[inline(always)]

@@ -105,14 +105,14 @@ impl Nearby {
         }
     }
 
-    /// Hand `h`'s answer, if it still holds every pair of its bones, whose
+    /// Whether hand `h`'s answer still holds every pair of its bones, whose
     /// reach boxes are `reach` (world, m, by bone index), and objects whose
     /// boxes may meet: the objects have moved less than the slack since it
     /// was asked, and each reach is inside the box it answered for.
-    fn serving(&self, h: usize, reach: &[Aabb]) -> Option<&Answer> {
-        let answer = self.answers.get(h)?.as_ref()?;
+    fn serves(&self, h: usize, reach: &[Aabb]) -> bool {
+        let Some(answer) = self.answers.get(h).and_then(Option::as_ref) else { return false };
         let inside = answer.bones.iter().zip(reach).all(|(within, now)| within.contains(now));
-        (answer.drift <= SLACK && answer.bones.len() == reach.len() && inside).then_some(answer)
+        answer.drift <= SLACK && answer.bones.len() == reach.len() && inside
     }
 }
 
@@ -139,7 +139,7 @@ impl InteractionWorld {
     /// [`Nearby::advance`]; and empties this step's `known` and `boxes`
     /// for its objects.
     pub(super) fn pairs_near(&self, h: usize, reach: &[Aabb], margin: f32, near: &mut Nearby) {
-        if near.serving(h, reach).is_none() {
+        if !near.serves(h, reach) {
             self.ask_broad_phase(h, reach, margin, near);
         }
         let answer = near.answers.get(h).and_then(Option::as_ref);
