@@ -3,7 +3,7 @@
 
 use super::stats;
 use super::trial::{self, Condition, TrialRun};
-use super::{AccuracyOptions, Conditions, Strategy, check_scale, check_some};
+use super::{AccuracyOptions, Conditions, Strategy, check_some};
 use crate::friction::KineticFriction;
 pub use crate::output::report::{Ablation, AblationRow};
 use crate::pipeline::{InteractionConfig, Method};
@@ -15,7 +15,7 @@ pub type Departure = (&'static str, fn(&mut InteractionConfig, &InteractionConfi
 
 /// Every departure of [`Method::Coulomb`] from [`Method::Thesis`]; each
 /// takes its value from the default config, the one home of the values.
-pub const DEPARTURES: [Departure; 9] = [
+pub const DEPARTURES: [Departure; 10] = [
     ("Coulomb's kinetic friction", |c, _| c.kinetic = KineticFriction::Coulomb),
     ("contact damper", |c, d| c.damping_ratio = d.damping_ratio),
     ("force cap", |c, d| c.force_cap = d.force_cap),
@@ -25,6 +25,7 @@ pub const DEPARTURES: [Departure; 9] = [
     ("virtual fingers", |c, d| c.virtual_fingers = d.virtual_fingers),
     ("patch deviation springs", |c, d| c.deviation_springs = d.deviation_springs),
     ("slip re-centring", |c, d| c.slip_recentre = d.slip_recentre),
+    ("tracking filter", |c, d| c.tracking = d.tracking),
 ];
 
 /// What to run.
@@ -38,7 +39,7 @@ pub struct AblationOptions {
     pub seed: u64,
     /// How the users move the cube: each configuration runs with each.
     pub strategies: Vec<Strategy>,
-    /// Tracking noise, times the recordings'.
+    /// Tracking noise, in [`Conditions::noise_unit`]s.
     pub noise: f32,
     /// How the trials run, besides the noise's strength.
     pub conditions: Conditions,
@@ -65,7 +66,8 @@ impl AblationOptions {
 }
 
 /// The configurations compared: the thesis's law, each departure added to
-/// it alone, and all of them (this crate's method).
+/// it alone, all of them (this crate's method), and all but the newest,
+/// the tracking filter, which shows what it adds to the rest.
 pub fn configurations() -> Vec<(String, InteractionConfig)> {
     let default = InteractionConfig::default();
     let thesis = Method::Thesis.config(default);
@@ -75,7 +77,10 @@ pub fn configurations() -> Vec<(String, InteractionConfig)> {
         give_back(&mut config, &default);
         out.push((format!("+ {name}"), config));
     }
-    out.push(("coulomb (all of them)".to_string(), Method::Coulomb.config(default)));
+    let coulomb = Method::Coulomb.config(default);
+    out.push(("coulomb (all of them)".to_string(), coulomb));
+    let raw = InteractionConfig { tracking: None, ..coulomb };
+    out.push(("coulomb without tracking filter".to_string(), raw));
     out
 }
 
@@ -84,7 +89,7 @@ pub fn ablation(
     options: &AblationOptions,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Ablation, RunError> {
-    check_scale("noise", options.noise)?;
+    options.conditions.check_noise(options.noise)?;
     for (field, n) in [
         ("users", options.users),
         ("trials", options.trials),
@@ -93,6 +98,7 @@ pub fn ablation(
         check_some(field, n)?;
     }
     let noise = options.conditions.noise()?;
+    let scale = options.conditions.scale(&noise, options.noise)?;
     let tasks = trial::tasks(options.users, options.trials, options.seed);
     let configs = configurations();
     let total = configs.len() * options.strategies.len() * tasks.len();
@@ -103,7 +109,7 @@ pub fn ablation(
                 config,
                 strategy,
                 noise: &noise,
-                noise_scale: options.noise,
+                noise_scale: scale,
                 perception: options.conditions.perception,
             };
             let done = rows.len() * tasks.len();

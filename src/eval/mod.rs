@@ -13,11 +13,13 @@
 //! * [`user`]: a synthetic user, a closed-loop controller of one tracked
 //!   hand, and the eyes through which it sees the cube;
 //! * [`trial`]: one trial, and many on several threads;
-//! * [`stats`]: means and proportions with confidence intervals.
+//! * [`stats`]: means and proportions with confidence intervals;
+//! * [`latency`]: how far the hand that acts lags the tracked hand.
 
 pub mod ablation;
 pub mod board;
 pub mod grip;
+pub mod latency;
 pub mod noise;
 pub mod perception;
 pub mod stats;
@@ -49,10 +51,22 @@ pub struct AccuracyOptions {
     pub methods: Vec<Method>,
     /// How the users move the cube: each method is run with each.
     pub strategies: Vec<Strategy>,
-    /// Tracking noise, times the recordings' (0: a perfect tracker).
+    /// Tracking noise, in [`Conditions::noise_unit`]s (0: a perfect
+    /// tracker).
     pub noise: f32,
     /// How the trials run, besides the noise's strength.
     pub conditions: Conditions,
+}
+
+/// What a study's noise strengths count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum NoiseUnit {
+    /// Times the recordings' own residuals.
+    #[default]
+    Times,
+    /// The residuals' rms per joint and axis, in mm: the recordings'
+    /// residuals scaled to it.
+    RmsMm,
 }
 
 /// How every trial of a study runs, besides its noise strength: shared
@@ -64,6 +78,8 @@ pub struct Conditions {
     pub perception: f32,
     /// The recordings to take the noise from (none: the bundled ones).
     pub noise_from: Vec<PathBuf>,
+    /// What the noise strengths count.
+    pub noise_unit: NoiseUnit,
     /// Threads to run trials on (the outcomes do not depend on it).
     pub threads: usize,
 }
@@ -71,7 +87,8 @@ pub struct Conditions {
 impl Default for Conditions {
     fn default() -> Self {
         let threads = trial::default_threads();
-        Conditions { perception: Self::PERCEPTION, noise_from: Vec::new(), threads }
+        let (noise_from, noise_unit) = (Vec::new(), NoiseUnit::Times);
+        Conditions { perception: Self::PERCEPTION, noise_from, noise_unit, threads }
     }
 }
 
@@ -83,6 +100,28 @@ impl Conditions {
     pub(crate) fn noise(&self) -> Result<TrackingNoise, RunError> {
         check_scale("perception", self.perception)?;
         TrackingNoise::load(&self.noise_from)
+    }
+
+    /// The scale on `noise`'s residuals of the strength `level`, in this
+    /// study's [`NoiseUnit`].
+    pub(crate) fn scale(&self, noise: &TrackingNoise, level: f32) -> Result<f32, RunError> {
+        match self.noise_unit {
+            NoiseUnit::Times => Ok(level),
+            NoiseUnit::RmsMm => noise.scale_for_rms_mm(level),
+        }
+    }
+
+    /// Checks a noise strength: finite and ≥ 0, in mm or times.
+    pub(crate) fn check_noise(&self, level: f32) -> Result<(), RunError> {
+        check_scale(self.noise_field(), level)
+    }
+
+    /// The option's name in errors.
+    fn noise_field(&self) -> &'static str {
+        match self.noise_unit {
+            NoiseUnit::Times => "noise",
+            NoiseUnit::RmsMm => "noise-mm",
+        }
     }
 }
 
@@ -114,7 +153,7 @@ impl AccuracyOptions {
     /// Checks what a run needs: users, trials, a method and a strategy,
     /// and scales that are finite and not negative.
     pub fn validate(&self) -> Result<(), RunError> {
-        check_scale("noise", self.noise)?;
+        self.conditions.check_noise(self.noise)?;
         check_some("users", self.users)?;
         check_some("trials", self.trials)?;
         check_some("method", self.methods.len())?;
@@ -186,6 +225,7 @@ pub fn accuracy(
 ) -> Result<AccuracyStudy, RunError> {
     options.validate()?;
     let noise = options.conditions.noise()?;
+    let scale = options.conditions.scale(&noise, options.noise)?;
     let tasks = trial::tasks(options.users, options.trials, options.seed);
     let runs = options.methods.len() * options.strategies.len();
     let total = tasks.len() * runs;
@@ -200,7 +240,7 @@ pub fn accuracy(
             config: method.config(InteractionConfig::default()),
             strategy,
             noise: &noise,
-            noise_scale: options.noise,
+            noise_scale: scale,
             perception: options.conditions.perception,
         };
         let done = k * tasks.len();
@@ -217,7 +257,8 @@ pub fn accuracy(
         users: options.users,
         trials: options.trials,
         seed: options.seed,
-        noise: Some(options.noise),
+        noise: Some(scale),
+        noise_rms_mm: Some(f64::from(scale) * f64::from(noise.rms) * 1e3),
         perception: Some(options.conditions.perception),
         methods,
         thesis: thesis_table(),

@@ -30,6 +30,9 @@ pub const MIN_TRACK: f64 = 1.0;
 /// A gap between two frames of a hand longer than this many times its
 /// median frame interval is a dropout.
 const DROPOUT_FACTOR: f64 = 2.5;
+/// Residuals with less rms than this (m) are a recording's float rounding,
+/// not a tracker's jitter: a micrometre, a hundredth of the best tracker's.
+pub const JITTERLESS: f32 = 1.0e-6;
 /// Joints per hand: the palm's centre, then four per digit, thumb first,
 /// from the base of the proximal bone to the tip.
 pub const JOINTS: usize = 21;
@@ -208,6 +211,20 @@ impl TrackingNoise {
         Ok(noise)
     }
 
+    /// The scale that gives these residuals an rms of `mm` per joint and
+    /// axis. An error if they have none to scale: less than
+    /// [`JITTERLESS`], float rounding rather than a tracker's error.
+    pub fn scale_for_rms_mm(&self, mm: f32) -> Result<f32, RunError> {
+        if mm == 0.0 {
+            return Ok(0.0);
+        }
+        if self.rms >= JITTERLESS {
+            return Ok(mm / (self.rms * 1e3));
+        }
+        let reason = format!("the recordings have no jitter to scale to {mm} mm");
+        Err(RunError::Study { field: "noise-mm", reason })
+    }
+
     /// A fresh stream of this noise for one trial, from a random stretch
     /// of a random recorded hand, `scale` times as strong and its dropouts
     /// `scale` times as frequent.
@@ -296,6 +313,15 @@ pub enum Tracked {
 }
 
 impl NoiseStream<'_> {
+    /// The noise at `t` (s), without dropouts: the stream's residual,
+    /// scaled.
+    pub fn residual(&self, t: f64) -> Residual {
+        match self.noise.tracks.get(self.track) {
+            Some(track) if self.scale > 0.0 => track.at(self.offset + t).scaled(self.scale),
+            _ => Residual::ZERO,
+        }
+    }
+
     /// The tracker's report at `t` (s), drawing dropouts from `rng`: they
     /// begin at the recordings' rate (times the scale) and last as long as
     /// one of theirs, drawn at random.
@@ -317,12 +343,7 @@ impl NoiseStream<'_> {
             }
             self.dropout = None;
         }
-        match self.noise.tracks.get(self.track) {
-            Some(track) if self.scale > 0.0 => {
-                Tracked::Hand(track.at(self.offset + t).scaled(self.scale))
-            }
-            _ => Tracked::Hand(Residual::ZERO),
-        }
+        Tracked::Hand(self.residual(t))
     }
 }
 

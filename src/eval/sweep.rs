@@ -5,7 +5,7 @@
 use super::noise::TrackingNoise;
 use super::stats;
 use super::trial::{self, Condition, TrialRun};
-use super::{Conditions, Strategy, check_scale, check_some};
+use super::{Conditions, Strategy, check_some};
 pub use crate::output::report::{NoiseSummary, SweepRow, SweepStudy};
 use crate::pipeline::{InteractionConfig, Method};
 use crate::run::RunError;
@@ -19,7 +19,8 @@ pub struct SweepOptions {
     pub trials: usize,
     /// One set of users and trials per seed.
     pub seeds: Vec<u64>,
-    /// The noise strengths, times the recordings' (0: a perfect tracker).
+    /// The noise strengths, in [`Conditions::noise_unit`]s (0: a perfect
+    /// tracker).
     pub noise: Vec<f32>,
     /// The methods compared.
     pub methods: Vec<Method>,
@@ -93,7 +94,7 @@ pub fn sweep(
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<SweepStudy, RunError> {
     for &s in &options.noise {
-        check_scale("noise", s)?;
+        options.conditions.check_noise(s)?;
     }
     for (field, n) in [
         ("users", options.users),
@@ -116,7 +117,8 @@ pub fn sweep(
     let mut rows = Vec::new();
     for &method in &options.methods {
         for &strategy in &options.strategies {
-            for &scale in &options.noise {
+            for &level in &options.noise {
+                let scale = options.conditions.scale(&noise, level)?;
                 let condition = Condition {
                     config: method.config(InteractionConfig::default()),
                     strategy,

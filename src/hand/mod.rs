@@ -4,10 +4,18 @@
 //! A [`HandPose`] is one tracking sample of every bone, in world metres.
 //! Bones are never bodies in the physics engine: they only ever act on
 //! objects through the friction contact forces of [`crate::friction`].
+//!
+//! * [`acting`]: the hand that acts, the tracked hand with the tracker's
+//!   jitter taken out ([`one_euro`], the 1€ filter; [`jitter`], the
+//!   tracker's jitter measured on the hand);
+//! * [`rig`]: a parametric hand for scripts.
 
 use glam::{Quat, Vec3};
 
+pub mod acting;
 mod curl;
+pub mod jitter;
+pub mod one_euro;
 pub mod rig;
 
 /// Handle of a hand in an [`crate::InteractionWorld`].

@@ -4,6 +4,7 @@
 use crate::contact::patch::PatchConfig;
 use crate::friction::{FINGERTIP_DISSIPATION, KineticFriction};
 use crate::grab::GrabMethod;
+use crate::hand::acting::TrackingFilter;
 use crate::scene::{GammaMode, Scene};
 use glam::Vec3;
 use rapier3d::dynamics::{FrictionModel, IntegrationParameters};
@@ -133,6 +134,10 @@ pub struct InteractionConfig {
     /// Skin friction on hand contacts (default). Without it a bone pushes
     /// with the law's normal force only, as the grab baselines' hands do.
     pub hand_friction: bool,
+    /// How the hand that acts follows the tracked hand: the tracker's
+    /// jitter taken out ([`crate::hand::acting`], default), or `None` for
+    /// the tracked hand as it is, as in the thesis.
+    pub tracking: Option<TrackingFilter>,
 }
 
 /// How rapier solves friction between objects (not hand contacts, which
@@ -170,6 +175,7 @@ impl Default for InteractionConfig {
             virtual_fingers: true,
             grab: None,
             hand_friction: true,
+            tracking: Some(TrackingFilter::default()),
         }
     }
 }
@@ -253,6 +259,9 @@ impl InteractionConfig {
         if !pos(self.probe_offset) {
             return err("probe_offset", format!("must be positive, got {}", self.probe_offset));
         }
+        if let Some(Err((field, reason))) = self.tracking.map(|t| t.validate()) {
+            return err(tracking_field(field), reason);
+        }
         Ok(())
     }
 
@@ -272,5 +281,18 @@ impl InteractionConfig {
         p.contact_softness.natural_frequency = frequency;
         let static_frequency = p.static_contact_softness.natural_frequency;
         p.static_contact_softness.natural_frequency = static_frequency.max(frequency);
+    }
+}
+
+/// A field of [`TrackingFilter`] as a config names it.
+fn tracking_field(field: &str) -> &'static str {
+    match field {
+        "gross.min_cutoff" => "tracking.gross.min_cutoff",
+        "gross.beta" => "tracking.gross.beta",
+        "gross.derivative_cutoff" => "tracking.gross.derivative_cutoff",
+        "shape.min_cutoff" => "tracking.shape.min_cutoff",
+        "shape.beta" => "tracking.shape.beta",
+        "shape.derivative_cutoff" => "tracking.shape.derivative_cutoff",
+        _ => "tracking.jitter_window",
     }
 }

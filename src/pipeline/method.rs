@@ -44,8 +44,9 @@ impl Method {
     /// The thesis's law as written: the kinetic rule as written, a pure spring
     /// (no damper, force cap or penetration-speed limit), one contact
     /// offset, no stability limit, the patch's samples carrying `f/N` each
-    /// (no deviation springs), and slipping C moved from where it is
-    /// rather than re-centred under the bone. One difference remains: `p`
+    /// (no deviation springs), slipping C moved from where it is rather
+    /// than re-centred under the bone, and the tracked hand acting as it is
+    /// tracked, jitter and all. One difference remains: `p`
     /// is the bone's surface point, not the phalanx centroid (see
     /// `contact/mod.rs`, "Which bone point is p"): with the centroid, the
     /// law's "no pulling force" rule would leave every bone pushing only
@@ -64,6 +65,7 @@ impl Method {
                 virtual_fingers: false,
                 deviation_springs: false,
                 slip_recentre: false,
+                tracking: None,
                 ..base
             },
             Method::Kinematic => Self::grab(base, GrabMethod::Kinematic),

@@ -6,6 +6,7 @@ use super::firewall;
 use super::record::{Call, Recorder};
 use super::step::{StepScratch, near};
 use crate::contact::{Contact, ContactEvent};
+use crate::hand::acting::ActingHand;
 use crate::hand::{HandId, HandPose, PoseError, Side};
 use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
 use glam::{Quat, Vec3};
@@ -82,9 +83,15 @@ pub(super) struct ObjectSlot {
 /// What the world keeps per hand.
 pub(super) struct HandSlot {
     pub side: Side,
+    /// The hand that acts: the tracked hand through the config's tracking
+    /// filter, from the step's first stage (`step/follow.rs`).
     pub pose: Option<HandPose>,
     /// The pose of the previous step, for bone velocities.
     pub prev: Option<HandPose>,
+    /// The pose the tracker last set.
+    pub tracked: Option<HandPose>,
+    /// The tracking filter's state, with the config's filter.
+    pub acting: Option<ActingHand>,
     /// Which pose `pose` is, and which `prev`: a count of the poses set,
     /// so that what was computed from a pose is known to hold for it.
     pub pose_mark: u64,
@@ -275,19 +282,36 @@ impl InteractionWorld {
 
     /// Adds a hand with no pose yet (untracked).
     pub fn add_hand(&mut self, side: Side) -> HandId {
-        self.hands.push(HandSlot { side, pose: None, prev: None, pose_mark: 0, prev_mark: 0 });
+        let acting = self.config.tracking.map(ActingHand::new);
+        let (pose, prev, tracked) = (None, None, None);
+        self.hands.push(HandSlot { side, pose, prev, tracked, acting, pose_mark: 0, prev_mark: 0 });
         self.record(|| Call::AddHand(side));
         HandId(self.hands.len() as u32 - 1)
     }
 
     /// Sets a hand's tracked pose for the next step. Call it every step
     /// (interpolating a slower tracker) so bone velocities are smooth.
-    /// A rejected pose leaves the world untouched.
+    /// With the config's tracking filter, the hand that acts follows it
+    /// from the next step's first stage ([`crate::hand::acting`]); a hand
+    /// that was not tracked acts where it is tracked at once. A rejected
+    /// pose leaves the world untouched.
     pub fn set_hand_pose(&mut self, hand: HandId, pose: &HandPose) -> Result<(), WorldError> {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         firewall::pose(hand.0, pose)?;
-        slot.pose = Some(pose.clone());
-        slot.pose_mark += 1;
+        match slot.acting.as_mut() {
+            Some(acting) => {
+                if slot.pose.is_none() {
+                    acting.begin(pose);
+                    slot.pose = Some(pose.clone());
+                    slot.pose_mark += 1;
+                }
+                slot.tracked = Some(pose.clone());
+            }
+            None => {
+                slot.pose = Some(pose.clone());
+                slot.pose_mark += 1;
+            }
+        }
         self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
         Ok(())
     }
@@ -297,14 +321,30 @@ impl InteractionWorld {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         slot.pose = None;
         slot.prev = None;
+        slot.tracked = None;
         slot.pose_mark += 1;
         self.record(|| Call::ClearHandPose(hand.0));
         Ok(())
     }
 
-    /// The hand's current pose, if tracked.
+    /// The hand that acts, if tracked: the pose its contacts saw in the
+    /// last step (or, for a hand tracked since, the pose set).
     pub fn hand_pose(&self, hand: HandId) -> Option<&HandPose> {
         self.hands.get(hand.0 as usize)?.pose.as_ref()
+    }
+
+    /// The hand as the tracker last set it, if tracked: without the
+    /// config's tracking filter, the hand that acts.
+    pub fn tracked_pose(&self, hand: HandId) -> Option<&HandPose> {
+        let slot = self.hands.get(hand.0 as usize)?;
+        slot.tracked.as_ref().or(slot.pose.as_ref())
+    }
+
+    /// The tracker's jitter as measured on the hand (m, rms per axis as
+    /// white noise would give it: [`crate::hand::jitter`]), with the
+    /// config's tracking filter; 0 until measured.
+    pub fn hand_jitter(&self, hand: HandId) -> Option<f32> {
+        self.hands.get(hand.0 as usize)?.acting.as_ref().map(ActingHand::jitter)
     }
 
     /// Which hand it is.

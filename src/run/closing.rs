@@ -8,7 +8,7 @@
 use super::RunError;
 use super::drive::{Observer, StepView};
 use super::grasp::spans::Signals;
-use super::grasp::{GraspSite, MIN_HOLD, SAMPLE_STEP, find_grasps};
+use super::grasp::{GraspSite, MIN_HOLD, SAMPLE_STEP, find_grasps, site_at, tracker_holds};
 use super::replay::{GraspObject, is_gripped, is_squeezed};
 use crate::friction::settling_time;
 use crate::input::playback::Playback;
@@ -53,6 +53,10 @@ pub struct ClosingVerdict {
     pub signals: Signals,
     /// Whether it was judged, and if not, why.
     pub hold: Hold,
+    /// Whether the tracker itself reports the hand holding in this
+    /// closing: its grab or pinch strength at or above 0.8 for at least
+    /// [`super::grasp::TRACKER_HOLD`] (0.2 s) within it.
+    pub tracker_hold: bool,
     /// How long the hand held: `opening_at − closing_at` (s).
     pub hold_s: f64,
     /// When the hand was closed, from `closing_at` to `opening_at`, the last
@@ -60,7 +64,9 @@ pub struct ClosingVerdict {
     /// whichever first ([`GraspSite`]); its most closed instant, where the
     /// object sits, and when every signal had let it go (s).
     pub closing_at: f64,
-    /// See `closing_at` (s).
+    /// When the fixture let go at the latest, where the object sits: the
+    /// most closed instant of the hold that leaves the grip its settling
+    /// time and then [`fall_time`] before the hand opens (s).
     pub closed_at: f64,
     /// See `closing_at` (s).
     pub opening_at: f64,
@@ -172,6 +178,76 @@ struct Judged {
     pressed: bool,
     /// The object in the palm frame once the grip settled.
     reference: Option<Vec3>,
+    /// The hold's sites, one per [`SAMPLE_STEP`] from `closing_at` to
+    /// `opening_at`: where the fixture's release is chosen.
+    sites: Vec<HoldSite>,
+}
+
+/// The site the hand has at one instant of a hold ([`site_at`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct HoldSite {
+    t: f64,
+    point: Vec3,
+    rotation: Quat,
+    aperture: f32,
+}
+
+/// How long an object that nothing holds takes to fall `distance` (m)
+/// from rest under `gravity` (m/s²) (s): a judged window at least this
+/// long sees an object the hand does not hold slip.
+pub fn fall_time(distance: f32, gravity: f32) -> f64 {
+    f64::from(2.0 * distance / gravity).sqrt()
+}
+
+/// The site at which the fixture lets go: the most closed of `sites` no
+/// later than `latest`, or the first if none is (a hold too short for
+/// this object's grip to settle and be judged).
+fn release_site(sites: &[HoldSite], latest: f64) -> Option<HoldSite> {
+    let judgeable = sites.iter().filter(|s| s.t <= latest + 1e-9);
+    judgeable.min_by(|a, b| a.aperture.total_cmp(&b.aperture)).or(sites.first()).copied()
+}
+
+/// `site` with its fixture's release (`closed_at`) and its object's place
+/// (`point`, `rotation`) moved to the latest instant that leaves a grip on
+/// the object time to be judged: the most closed instant of the hold at
+/// least the grip's `settle` time (s) and then the [`fall_time`] of the
+/// hand's `slip_bound` (m) under `gravity` (m/s²) before the hand opens,
+/// or the hold's first instant if none is. Unchanged where that is its
+/// most closed instant.
+/// `sites` are the hold's ([`hold_sites`]).
+pub(crate) fn let_go_site(
+    sites: &[HoldSite],
+    site: &GraspSite,
+    settle: f64,
+    (slip_bound, gravity): (f32, f32),
+) -> GraspSite {
+    let latest = site.opening_at - settle - fall_time(slip_bound, gravity);
+    match release_site(sites, latest) {
+        Some(at) if at.t != site.closed_at => {
+            GraspSite { closed_at: at.t, point: at.point, rotation: at.rotation, ..*site }
+        }
+        _ => *site,
+    }
+}
+
+/// The drift that is a slip at `site` (m): twice the closing hand's index
+/// fingertip radius, a finger's width.
+pub(crate) fn slip_bound(playback: &Playback, site: &GraspSite) -> f32 {
+    let finger = playback.sample(site.track, site.closed_at);
+    finger.map_or(0.0, |h| 2.0 * h.pose.fingers[1][2].radius)
+}
+
+/// The sites of `site`'s hold, one per [`SAMPLE_STEP`].
+pub(crate) fn hold_sites(playback: &Playback, site: &GraspSite) -> Vec<HoldSite> {
+    let first = (site.closing_at / SAMPLE_STEP).round() as usize;
+    let last = (site.opening_at / SAMPLE_STEP).round() as usize;
+    (first..=last)
+        .filter_map(|k| {
+            let t = k as f64 * SAMPLE_STEP;
+            let (point, rotation, aperture) = site_at(playback, site.track, t)?;
+            Some(HoldSite { t, point, rotation, aperture })
+        })
+        .collect()
 }
 
 /// The [`Observer`] that puts an object at every closing of a recording's
@@ -193,6 +269,8 @@ impl Closings {
             GraspSite { point: Vec3::ZERO, rotation: Quat::IDENTITY, ..Default::default() };
         object.at(&origin, "closing-1").validate()?;
         let sites = find_grasps(playback, SAMPLE_STEP);
+        let holds: Vec<Vec<(f64, f64)>> =
+            (0..playback.tracks.len()).map(|track| tracker_holds(playback, track)).collect();
         let judged = sites
             .iter()
             .enumerate()
@@ -200,8 +278,7 @@ impl Closings {
                 let next = sites[k + 1..].iter().find(|s| s.track == site.track);
                 let window_end = (site.open_at + RELEASE_WINDOW)
                     .min(next.map_or(f64::INFINITY, |n| n.widest_before));
-                let finger = playback.sample(site.track, site.closed_at);
-                let slip_bound = finger.map_or(0.0, |h| 2.0 * h.pose.fingers[1][2].radius);
+                let slip_bound = slip_bound(playback, site);
                 Judged {
                     site: *site,
                     verdict: ClosingVerdict {
@@ -209,6 +286,9 @@ impl Closings {
                         hand: playback.tracks[site.track].id,
                         signals: site.signals,
                         hold: if site.sustained { Hold::Judged } else { Hold::TooShort },
+                        tracker_hold: holds[site.track]
+                            .iter()
+                            .any(|&(a, b)| a <= site.open_at && b >= site.closing_at),
                         hold_s: site.hold(),
                         closing_at: site.closing_at,
                         closed_at: site.closed_at,
@@ -231,6 +311,7 @@ impl Closings {
                     settle: 0.0,
                     pressed: false,
                     reference: None,
+                    sites: hold_sites(playback, site),
                 }
             })
             .collect();
@@ -246,7 +327,7 @@ impl Closings {
 
 /// The settling time of the grip on object `id` ([`settling_time`]): its
 /// γ and mass, and the contacts' damping ratio (none without a damper).
-fn grip_settling(world: &InteractionWorld, id: ObjectId) -> f64 {
+pub(crate) fn grip_settling(world: &InteractionWorld, id: ObjectId) -> f64 {
     let (gamma, mass) = (world.object_gamma(id), world.object_mass(id));
     let zeta = world.config().damping_ratio.unwrap_or(0.0);
     let settle = gamma.zip(mass).and_then(|(k, m)| settling_time(k, m, zeta));
@@ -254,9 +335,11 @@ fn grip_settling(world: &InteractionWorld, id: ObjectId) -> f64 {
 }
 
 impl Observer for Closings {
-    /// Adds each object at its site when its time comes (none for a
-    /// closing too short to judge), and lets each fixture go when the hand
-    /// grips the object or at the most closed instant (re-seating the
+    /// Adds each object when its time comes (none for a closing too short
+    /// to judge), at the site the hand has when its fixture lets go at the
+    /// latest (the grip's settling time and then the object's fall time
+    /// before the hand opens), and lets each fixture go when
+    /// the hand grips the object or at that instant (re-seating the
     /// contacts then, as [`super::replay::Fixtures`] does).
     fn before_step(&mut self, world: &mut InteractionWorld, t: f64) -> Result<(), RunError> {
         for j in &mut self.judged {
@@ -268,6 +351,13 @@ impl Observer for Closings {
                 world.set_object_locked(id, true)?;
                 j.settle = grip_settling(world, id);
                 j.id = Some(id);
+                let bound = (j.verdict.slip_bound, world.config().gravity.length());
+                let at = let_go_site(&j.sites, &j.site, j.settle, bound);
+                if at.closed_at != j.site.closed_at {
+                    j.site = at;
+                    (j.verdict.closed_at, j.verdict.site) = (at.closed_at, at.point.to_array());
+                    world.place_object(id, at.point, at.rotation)?;
+                }
             }
             let Some(id) = j.id.filter(|_| j.fixed) else { continue };
             let gripped = is_gripped(world, id);
@@ -359,5 +449,30 @@ impl Judged {
             v.released = Some(true);
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn site(t: f64, aperture: f32) -> HoldSite {
+        HoldSite { t, point: Vec3::splat(t as f32), rotation: Quat::IDENTITY, aperture }
+    }
+
+    #[test]
+    fn an_unheld_object_falls_a_finger_width_in_about_sixty_milliseconds() {
+        assert!((fall_time(0.0188, 9.81) - 0.0619).abs() < 1e-3);
+    }
+
+    #[test]
+    fn the_fixture_lets_go_at_the_most_closed_instant_that_leaves_time_to_judge() {
+        // Most closed at 0.9 s, but the hold must be judged by 0.8 s.
+        let sites = [site(0.5, 0.05), site(0.6, 0.03), site(0.7, 0.04), site(0.9, 0.01)];
+        assert_eq!(release_site(&sites, 0.8).unwrap().t, 0.6);
+        assert_eq!(release_site(&sites, 1.0).unwrap().t, 0.9, "time enough: as before");
+        // A hold too short for any: its first instant.
+        assert_eq!(release_site(&sites, 0.4).unwrap().t, 0.5);
+        assert!(release_site(&[], 1.0).is_none());
     }
 }

@@ -2,7 +2,7 @@
 //! world, with a summary, and objects put where the recorded hand grasps.
 
 use super::RunError;
-use super::closing::{ClosingVerdict, Closings};
+use super::closing::{self, ClosingVerdict, Closings};
 use super::drive::{self, Driver, Observer, RecordedHand};
 use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
 use super::observe::{ObjectSummary, Summary};
@@ -287,8 +287,9 @@ impl std::str::FromStr for GraspObject {
 pub struct Fixture {
     /// The object held.
     pub object: ObjectId,
-    /// Released when the hand grips it, or at the grasp's most closed
-    /// instant at the latest (s).
+    /// Released when the hand grips it, or at the latest at the most
+    /// closed instant of the grasp that leaves the grip time to be judged
+    /// ([`super::closing::ClosingVerdict::closed_at`]) (s).
     pub release_by: f64,
 }
 
@@ -309,7 +310,13 @@ pub fn place_at_grasp(
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
     let id = world.add_object(&object.at(&site, "grasped"))?;
     world.set_object_locked(id, true)?;
-    Ok((Fixture { object: id, release_by: site.closed_at }, site))
+    let bound = (closing::slip_bound(playback, &site), world.config().gravity.length());
+    let settle = closing::grip_settling(world, id);
+    let at = closing::let_go_site(&closing::hold_sites(playback, &site), &site, settle, bound);
+    if at.closed_at != site.closed_at {
+        world.place_object(id, at.point, at.rotation)?;
+    }
+    Ok((Fixture { object: id, release_by: at.closed_at }, at))
 }
 
 /// Whether the hand contacts on an object could hold it up, without

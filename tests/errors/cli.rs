@@ -305,6 +305,12 @@ fn a_study_names_the_noise_recording_it_cannot_use() {
         let e = cli_error(&[study, &["--noise-from", &short]].concat());
         names(e, &[&short, "no hand is tracked for 1 s or more"]);
     }
+    // A hand held perfectly still for 1.5 s has no jitter to scale to 2 mm.
+    let frames: Vec<_> = (0..150).map(|k| frame(k * 10_000, &[leap_hand(3)])).collect();
+    let still = dir.file("still.json", recording(&frames)).display().to_string();
+    let sweep = ["eval", "sweep", "--users", "1", "--trials", "1", "--noise-from", &still];
+    let e = cli_error(&[&sweep[..], &["--noise-mm", "2"]].concat());
+    names(e, &["study: noise-mm: ", "the recordings have no jitter to scale to 2 mm"]);
     // Scales out of range are usage errors naming the option.
     let e = usage_error(&["eval", "accuracy", "--noise=-1"]);
     names(e, &["'--noise <SCALE>'", "expected a finite scale ≥ 0, got -1"]);
@@ -312,18 +318,32 @@ fn a_study_names_the_noise_recording_it_cannot_use() {
     names(e, &["--noise", "got nan"]);
     let e = usage_error(&["eval", "ablation", "--perception", "inf"]);
     names(e, &["'--perception <SCALE>'", "got inf"]);
+    let e = usage_error(&["eval", "sweep", "--noise-mm", "1,-2"]);
+    names(e, &["--noise-mm", "expected a finite scale ≥ 0, got -2"]);
+    let e = usage_error(&["eval", "accuracy", "--noise-mm", "2", "--noise", "1"]);
+    names(e, &["'--noise-mm <MM>' cannot be used with '--noise <SCALE>'"]);
+    let e = usage_error(&["eval", "latency", "--noise-mm", "nan"]);
+    names(e, &["--noise-mm", "got nan"]);
     let e = usage_error(&["eval", "accuracy", "--strategy", "throw"]);
     names(e, &["unknown strategy \"throw\": expected lift or slide"]);
 }
 
 #[test]
 fn the_library_refuses_study_options_out_of_range_naming_them() {
+    use coulomb_hands::eval::latency::{LatencyOptions, latency};
     use coulomb_hands::eval::sweep::{SweepOptions, sweep};
-    use coulomb_hands::eval::{AccuracyOptions, accuracy};
+    use coulomb_hands::eval::{AccuracyOptions, NoiseUnit, accuracy};
     let bad = AccuracyOptions { noise: f32::NAN, ..AccuracyOptions::default() };
     names(accuracy(&bad, &mut |_, _| {}).unwrap_err(), &["study: noise: ", "got NaN"]);
     let bad = AccuracyOptions { strategies: Vec::new(), ..AccuracyOptions::default() };
     names(accuracy(&bad, &mut |_, _| {}).unwrap_err(), &["study: strategy: ", "at least one"]);
     let bad = SweepOptions { noise: vec![0.5, -2.0], ..SweepOptions::default() };
     names(sweep(&bad, &mut |_, _| {}).unwrap_err(), &["study: noise: ", "got -2"]);
+    let mut in_mm = SweepOptions { noise: vec![1.0, f32::INFINITY], ..SweepOptions::default() };
+    in_mm.conditions.noise_unit = NoiseUnit::RmsMm;
+    names(sweep(&in_mm, &mut |_, _| {}).unwrap_err(), &["study: noise-mm: ", "got inf"]);
+    let bad = LatencyOptions { streams: 0, ..LatencyOptions::default() };
+    names(latency(&bad).unwrap_err(), &["study: streams: ", "at least one"]);
+    let bad = LatencyOptions { noise: vec![-1.0], ..LatencyOptions::default() };
+    names(latency(&bad).unwrap_err(), &["study: noise-mm: ", "got -1"]);
 }

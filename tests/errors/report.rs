@@ -151,6 +151,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         trials: 5,
         seed: 7,
         noise: Some(0.5),
+        noise_rms_mm: None,
         perception: Some(1.0),
         methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
         thesis: vec![ThesisResult {
@@ -292,7 +293,7 @@ fn the_sweep_and_the_ablation_come_from_their_files() {
     // Only the accuracy study and the bench are absent; the sweep has a
     // plot (one strategy) and a row per noise strength.
     assert_eq!(page.matches("class=\"absent\"").count(), 2);
-    for noise in ["×0", "×1"] {
+    for noise in ["×0 (0.00 mm)", "×1 (0.72 mm)"] {
         let row = format!("<tr><td>kinematic</td><td>lift</td><td class=\"num\">{noise}</td>");
         assert!(page.contains(&row), "no sweep row for noise {noise}");
     }

@@ -3,6 +3,7 @@
 
 use crate::names;
 use coulomb_hands::contact::patch::PatchConfig;
+use coulomb_hands::hand::acting::TrackingFilter;
 use coulomb_hands::hand::rig::HandRig;
 use coulomb_hands::run::drive::{Driver, PoseFn};
 use coulomb_hands::scene::{Part, mesh::TriangleMesh};
@@ -49,6 +50,22 @@ fn every_config_field_is_checked_by_name_with_its_value() {
     let speed = config_error(|c| c.max_penetration_speed = Some(0.0));
     names(speed, &["config: max_penetration_speed: ", "got 0"]);
     names(config_error(|c| c.probe_offset = -0.004), &["config: probe_offset: ", "got -0.004"]);
+    let filter = |change: fn(&mut TrackingFilter)| {
+        config_error(move |c| {
+            let mut f = TrackingFilter::default();
+            change(&mut f);
+            c.tracking = Some(f);
+        })
+    };
+    let beta = filter(|f| f.shape.beta = -0.002);
+    names(beta, &["config: tracking.shape.beta: ", "finite and ≥ 0", "got -0.002"]);
+    let cutoff = filter(|f| f.gross.min_cutoff = f32::INFINITY);
+    names(cutoff, &["config: tracking.gross.min_cutoff: ", "Hz, got inf"]);
+    let derivative = filter(|f| f.shape.derivative_cutoff = 0.0);
+    names(derivative, &["config: tracking.shape.derivative_cutoff: ", "got 0"]);
+    let window = filter(|f| f.jitter_window = f32::NAN);
+    names(window, &["config: tracking.jitter_window: ", "got NaN"]);
+    names(filter(|f| f.jitter_window = 90.0), &["tracking.jitter_window: ", "(0, 60] s, got 90"]);
 }
 
 fn pose() -> HandPose {

@@ -1,6 +1,7 @@
 //! Physical-outcome tests of the core: every test asserts what happens to
 //! objects (held, slipped, slid, tipped, launched), never timings.
 
+mod acting;
 mod balance;
 mod baselines;
 mod bench;

@@ -5,7 +5,7 @@
 use crate::arrays::{points_array, pose_dict};
 use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError, UnknownMethodError};
 use crate::{bench_error, run_error};
-use coulomb_hands::eval::{AccuracyOptions, Conditions, Strategy, accuracy};
+use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, accuracy};
 use coulomb_hands::input::mediapipe::{self, Label};
 use coulomb_hands::input::{layouts, recording, skeleton};
 use coulomb_hands::run::bench::{self as lib_bench, BenchOptions};
@@ -128,6 +128,7 @@ fn run_scenario<'py>(
     methods = None,
     strategies = None,
     noise = AccuracyOptions::NOISE,
+    noise_mm = None,
     perception = Conditions::PERCEPTION,
     noise_from = None,
     threads = None,
@@ -141,6 +142,7 @@ fn eval_accuracy<'py>(
     methods: Option<Vec<String>>,
     strategies: Option<Vec<String>>,
     noise: f32,
+    noise_mm: Option<f32>,
     perception: f32,
     noise_from: Option<Vec<PathBuf>>,
     threads: Option<usize>,
@@ -157,9 +159,14 @@ fn eval_accuracy<'py>(
             .map(|s| s.parse::<Strategy>().map_err(ArgumentError::new_err))
             .collect::<PyResult<_>>()?,
     };
+    let (noise, noise_unit) = match noise_mm {
+        Some(mm) => (mm, NoiseUnit::RmsMm),
+        None => (noise, NoiseUnit::Times),
+    };
     let conditions = Conditions {
         perception,
         noise_from: noise_from.unwrap_or_default(),
+        noise_unit,
         threads: threads.unwrap_or(defaults.conditions.threads),
     };
     let options = AccuracyOptions { users, trials, seed, methods, strategies, noise, conditions };

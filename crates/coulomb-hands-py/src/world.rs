@@ -326,10 +326,29 @@ impl World {
         self.world.set_hand_pose(HandId(hand), &pose).map_err(world_error)
     }
 
-    /// The hand's current pose as a dict of arrays, or None if untracked.
+    /// The hand that acts as a dict of arrays, or None if untracked: the
+    /// pose its contacts saw in the last step, the tracked hand with the
+    /// tracker's jitter taken out.
     fn hand_pose<'py>(&self, py: Python<'py>, hand: u32) -> PyResult<Option<Bound<'py, PyDict>>> {
         self.hand(hand)?;
         self.world.hand_pose(HandId(hand)).map(|p| arrays::pose_dict(py, p)).transpose()
+    }
+
+    /// The hand as it was last set, or None if untracked.
+    fn tracked_pose<'py>(
+        &self,
+        py: Python<'py>,
+        hand: u32,
+    ) -> PyResult<Option<Bound<'py, PyDict>>> {
+        self.hand(hand)?;
+        self.world.tracked_pose(HandId(hand)).map(|p| arrays::pose_dict(py, p)).transpose()
+    }
+
+    /// The tracker's jitter measured on the hand (m, rms per axis), or None
+    /// without the config's tracking filter.
+    fn hand_jitter(&self, hand: u32) -> PyResult<Option<f32>> {
+        self.hand(hand)?;
+        Ok(self.world.hand_jitter(HandId(hand)))
     }
 
     /// Marks a hand untracked: its contacts end at the next step.

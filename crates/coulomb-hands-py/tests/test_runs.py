@@ -39,7 +39,7 @@ def test_openxr_joints_of_a_recording_pose_the_hand_the_rust_loader_poses() -> N
                 radii=np.array(hand["radii"]),
                 orientations=np.array(hand["orientations"]),
             )
-            pose = world.hand_pose(hands[side])
+            pose = world.tracked_pose(hands[side])
             assert pose is not None
             for key, value in expected["pose"].items():
                 assert np.array_equal(pose[key], value), key  # type: ignore[literal-required]
@@ -90,7 +90,7 @@ def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
 
 def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
     args = ["--users", "1", "--trials", "2", "--seed", "17", "--method", "coulomb,thesis"]
-    args += ["--strategy", "slide", "--noise", "0.6"]
+    args += ["--strategy", "slide", "--noise-mm", "0.45"]
     out = subprocess.run(
         [str(cli()), "eval", "accuracy", "--json", *args],
         cwd=REPO,
@@ -99,10 +99,16 @@ def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
         check=True,
     ).stdout
     data = ch.eval_accuracy(
-        users=1, trials=2, seed=17, methods=["coulomb", "thesis"], strategies=["slide"], noise=0.6
+        users=1,
+        trials=2,
+        seed=17,
+        methods=["coulomb", "thesis"],
+        strategies=["slide"],
+        noise_mm=0.45,
     )
     assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
     assert [m["method"] for m in data["methods"]] == ["coulomb", "thesis"]
+    assert abs(data["noise_rms_mm"] - 0.45) < 1e-6
 
 
 def test_a_scenario_runs_and_passes_its_checks() -> None:

@@ -33,6 +33,10 @@ def run() -> float:
     tracked_fist(world, hand)
     pose: Optional[ch.HandPose] = world.hand_pose(hand)
     assert pose is not None
+    tracked: Optional[ch.HandPose] = world.tracked_pose(hand)
+    assert tracked is not None
+    jitter: Optional[float] = world.hand_jitter(hand)
+    assert jitter == 0.0
     world.set_hand_pose(hand, pose)
     world.step(5)
     world.apply_hand_forces()

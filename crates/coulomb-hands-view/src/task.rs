@@ -173,6 +173,7 @@ impl ChessboardTask {
                 trials: 0,
                 seed: self.options.seed,
                 noise: None,
+                noise_rms_mm: None,
                 perception: None,
                 methods: Vec::new(),
                 thesis: thesis_table(),

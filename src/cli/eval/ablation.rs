@@ -32,13 +32,14 @@ impl AblationArgs {
     /// Runs the ablation and prints its table, or one JSON object.
     pub fn run(self) -> Outcome {
         let show = shows_progress(&self.output);
+        let (noise, unit) = self.draw.noise();
         let options = AblationOptions {
             users: self.users,
             trials: self.trials,
             seed: self.draw.seed,
             strategies: self.strategies.strategy,
-            noise: self.draw.noise,
-            conditions: self.condition.conditions(),
+            noise,
+            conditions: self.condition.conditions(unit),
         };
         let total =
             configurations().len() * options.strategies.len() * options.users * options.trials;

@@ -49,14 +49,15 @@ pub struct StudyArgs {
 impl StudyArgs {
     /// The study these options ask for.
     pub fn options(self) -> AccuracyOptions {
+        let (noise, unit) = self.draw.noise();
         AccuracyOptions {
             users: self.users,
             trials: self.trials,
             seed: self.draw.seed,
             methods: self.methods.method,
             strategies: self.strategies.strategy,
-            noise: self.draw.noise,
-            conditions: self.condition.conditions(),
+            noise,
+            conditions: self.condition.conditions(unit),
         }
     }
 }
@@ -70,11 +71,15 @@ pub fn study(options: &AccuracyOptions, show: bool) -> Result<AccuracyStudy, Run
 /// Table 5.2's shape: one row per method and strategy, the thesis's figure
 /// beside it.
 fn print_table(r: &AccuracyStudy) {
-    let noise = r.noise.map_or("—".into(), |n| format!("{n}"));
+    let noise = match (r.noise, r.noise_rms_mm) {
+        (Some(n), Some(mm)) => format!("x{n} ({mm:.2} mm rms)"),
+        (Some(n), None) => format!("x{n}"),
+        (None, _) => "—".into(),
+    };
     let sight = r.perception.map_or("—".into(), |p| format!("{p}"));
     println!(
         "positioning accuracy (thesis §5.2): {} synthetic users x {} trials, seed {}, \
-         tracking noise x{noise}, glance errors x{sight}",
+         tracking noise {noise}, glance errors x{sight}",
         r.users, r.trials, r.seed
     );
     println!(

@@ -1,11 +1,13 @@
 //! `eval`: the positioning-accuracy study, printed beside the thesis's
 //! Table 5.2 (`accuracy`); the same swept over tracking noise (`sweep`);
-//! and the thesis's law given its departures back one at a time
-//! (`ablation`). One file each; `options` holds the option groups they
+//! the thesis's law given its departures back one at a time
+//! (`ablation`); and how far the hand that acts lags the tracked hand
+//! (`latency`). One file each; `options` holds the option groups they
 //! share.
 
 pub mod ablation;
 pub mod accuracy;
+pub mod latency;
 pub mod options;
 pub mod sweep;
 
@@ -27,6 +29,7 @@ enum Study {
     Accuracy(accuracy::AccuracyArgs),
     Sweep(sweep::SweepArgs),
     Ablation(ablation::AblationArgs),
+    Latency(latency::LatencyArgs),
 }
 
 impl EvalArgs {
@@ -36,6 +39,7 @@ impl EvalArgs {
             Study::Accuracy(args) => args.run(),
             Study::Sweep(args) => args.run(),
             Study::Ablation(args) => args.run(),
+            Study::Latency(args) => args.run(),
         }
     }
 }

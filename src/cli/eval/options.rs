@@ -4,7 +4,7 @@
 //! accuracy`, `eval sweep`) and the users' strategies (all of them).
 
 use coulomb_hands::Method;
-use coulomb_hands::eval::{AccuracyOptions, Conditions, Strategy, trial};
+use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, trial};
 use std::fmt::Display;
 use std::path::PathBuf;
 use std::sync::LazyLock;
@@ -27,10 +27,12 @@ pub struct ConditionArgs {
 }
 
 impl ConditionArgs {
-    /// The conditions these options ask for.
-    pub fn conditions(self) -> Conditions {
+    /// The conditions these options ask for, with noise strengths counted
+    /// in `noise_unit`s.
+    pub fn conditions(self, noise_unit: NoiseUnit) -> Conditions {
         let threads = self.threads.map_or_else(trial::default_threads, usize::from);
-        Conditions { perception: self.perception, noise_from: self.noise_from, threads }
+        let (perception, noise_from) = (self.perception, self.noise_from);
+        Conditions { perception, noise_from, noise_unit, threads }
     }
 }
 
@@ -44,7 +46,21 @@ pub struct DrawArgs {
     /// Tracking noise, times the recordings' (0: a perfect tracker).
     #[arg(long, value_name = "SCALE", default_value_t = AccuracyOptions::NOISE,
           value_parser = scale)]
-    pub noise: f32,
+    noise: f32,
+    /// Tracking noise by its rms per joint and axis: the recordings' residuals scaled to
+    /// it (instead of --noise).
+    #[arg(long, value_name = "MM", value_parser = scale, conflicts_with = "noise")]
+    noise_mm: Option<f32>,
+}
+
+impl DrawArgs {
+    /// The noise strength asked for, and what it counts.
+    pub fn noise(&self) -> (f32, NoiseUnit) {
+        match self.noise_mm {
+            Some(mm) => (mm, NoiseUnit::RmsMm),
+            None => (self.noise, NoiseUnit::Times),
+        }
+    }
 }
 
 /// Every method, as `--method` takes them.

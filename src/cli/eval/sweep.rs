@@ -6,6 +6,7 @@ use super::{ci, num, shows_progress, with_bar};
 use crate::cli::Outcome;
 use crate::cli::args::count;
 use crate::cli::options::JsonOutput;
+use coulomb_hands::eval::NoiseUnit;
 use coulomb_hands::eval::stats::Estimate;
 use coulomb_hands::eval::sweep::{SweepOptions, SweepStudy, sweep};
 use std::sync::LazyLock;
@@ -32,6 +33,11 @@ pub struct SweepArgs {
     #[arg(long, value_name = "SCALE,...", value_delimiter = ',', default_value = NOISE.as_str(),
           value_parser = scale)]
     noise: Vec<f32>,
+    /// Tracking noise strengths by their rms per joint and axis, comma-separated: the
+    /// recordings' residuals scaled to each (instead of --noise).
+    #[arg(long, value_name = "MM,...", value_delimiter = ',', value_parser = scale,
+          conflicts_with = "noise")]
+    noise_mm: Option<Vec<f32>>,
     #[command(flatten)]
     methods: MethodsArg,
     #[command(flatten)]
@@ -46,14 +52,18 @@ impl SweepArgs {
     /// Runs the sweep and prints its table, or one JSON object.
     pub fn run(self) -> Outcome {
         let show = shows_progress(&self.output);
+        let (noise, unit) = match self.noise_mm {
+            Some(mm) => (mm, NoiseUnit::RmsMm),
+            None => (self.noise, NoiseUnit::Times),
+        };
         let options = SweepOptions {
             users: self.users,
             trials: self.trials,
             seeds: self.seeds,
-            noise: self.noise,
+            noise,
             methods: self.methods.method,
             strategies: self.strategies.strategy,
-            conditions: self.condition.conditions(),
+            conditions: self.condition.conditions(unit),
         };
         let conditions = options.methods.len() * options.strategies.len() * options.noise.len();
         let total = conditions * options.seeds.len() * options.users * options.trials;
@@ -80,10 +90,11 @@ fn print_sweep(s: &SweepStudy) {
         s.noise.dropout_ms
     );
     println!(
-        "{:<10} {:<6} {:>5} {:>20} {:>6} {:>20} {:>18} {:>18}",
+        "{:<10} {:<6} {:>6} {:>6} {:>20} {:>6} {:>20} {:>18} {:>18}",
         "method",
         "moves",
         "noise",
+        "rms mm",
         "error mm [95% CI]",
         "median",
         "time s",
@@ -97,10 +108,11 @@ fn print_sweep(s: &SweepStudy) {
             high: e.high * 100.0,
         };
         println!(
-            "{:<10} {:<6} {:>5} {:>20} {:>6} {:>20} {:>18} {:>18}",
+            "{:<10} {:<6} {:>6} {:>6.2} {:>20} {:>6} {:>20} {:>18} {:>18}",
             r.method,
             r.strategy,
-            format!("x{}", r.noise),
+            format!("x{:.3}", r.noise).trim_end_matches('0').trim_end_matches('.'),
+            f64::from(r.noise) * s.noise.rms_mm,
             ci(&r.error_mm, 1),
             num(r.median_mm, 1),
             ci(&r.time_s, 1),

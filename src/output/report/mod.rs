@@ -23,7 +23,9 @@ mod study_page;
 mod tests;
 
 pub use page::html;
-pub use study::{Ablation, AblationRow, Estimate, NoiseSummary, SweepRow, SweepStudy};
+pub use study::{
+    Ablation, AblationRow, Estimate, LatencyRow, LatencyStudy, NoiseSummary, SweepRow, SweepStudy,
+};
 
 use crate::file_error::FileError;
 use serde::{Deserialize, Deserializer, Serialize};
@@ -86,6 +88,10 @@ pub struct AccuracyStudy {
     /// written before the study had it: jitter of 0.2–1.2 mm then).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub noise: Option<f32>,
+    /// That noise's rms per joint and axis (mm; absent from files written
+    /// before the study had it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub noise_rms_mm: Option<f64>,
     /// The users' glance errors, times the display's (absent: exact).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub perception: Option<f32>,

@@ -132,3 +132,30 @@ impl Ablation {
         load_json(path)
     }
 }
+
+/// `eval latency --json`: how far the hand that acts lags the tracked hand.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatencyStudy {
+    /// Noise streams averaged per noise strength.
+    pub streams: usize,
+    /// One row per noise strength and motion.
+    pub rows: Vec<LatencyRow>,
+}
+
+/// One motion at one noise strength.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatencyRow {
+    /// `hand step`, `hand sine`, `grip step` or `grip sine`.
+    pub motion: String,
+    /// The noise strength, times the recordings'.
+    pub noise: f32,
+    /// Its rms per joint and axis (mm).
+    pub noise_rms_mm: f64,
+    /// On a step, the time until the acting hand covered half of it; on a
+    /// sine, the delay of its 1 Hz component (ms).
+    #[serde(deserialize_with = "null_as_nan")]
+    pub latency_ms: f64,
+    /// On a sine, the acting hand's amplitude over the tracked hand's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gain: Option<f64>,
+}

@@ -56,16 +56,23 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
         s.perception
     );
     let strategies = distinct(s.rows.iter().map(|r| r.strategy.as_str()));
-    p.push_str("<div class=\"row\">\n");
     for strategy in &strategies {
         let rows: Vec<&SweepRow> = s.rows.iter().filter(|r| r.strategy == *strategy).collect();
+        p.push_str("<div class=\"row\">\n");
         let caption = format!(
-            "{strategy}: mean placement error of the completed trials against tracking noise, \
-             with its 95 % interval; one line per method."
+            "{strategy}: mean placement error of the completed trials against the tracking \
+             noise's rms, with its 95 % interval; one line per method."
         );
-        plot(p, &error_plot(strategy, &rows), &caption);
+        let error = Against { title: "Placement error", y: "error (mm)", value: |r| r.error_mm };
+        plot(p, &noise_plot(strategy, &rows, s.noise.rms_mm, error), &caption);
+        let caption = format!(
+            "{strategy}: times the cube fell out of the hand per trial, against the tracking \
+             noise's rms, with its 95 % interval; one line per method."
+        );
+        let drops = Against { title: "Drops", y: "drops per trial", value: |r| r.drops };
+        plot(p, &noise_plot(strategy, &rows, s.noise.rms_mm, drops), &caption);
+        p.push_str("</div>\n");
     }
-    p.push_str("</div>\n");
     let rows: Vec<Vec<String>> = s
         .rows
         .iter()
@@ -73,7 +80,7 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
             vec![
                 escape(&r.method),
                 escape(&r.strategy),
-                format!("#×{}", r.noise),
+                format!("#×{} ({:.2} mm)", r.noise, f64::from(r.noise) * s.noise.rms_mm),
                 format!("#{}", r.trials),
                 ci(&r.error_mm, 1),
                 ci(&r.time_s, 1),
@@ -97,24 +104,36 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
     table(p, &head, &rows);
 }
 
-/// Mean error against noise strength for one strategy's rows, one line
-/// per method, with interval bars.
-fn error_plot(strategy: &str, rows: &[&SweepRow]) -> String {
+/// What a noise plot shows of each row.
+struct Against {
+    /// The plot's title, before the strategy.
+    title: &'static str,
+    /// The y axis.
+    y: &'static str,
+    value: fn(&SweepRow) -> Estimate,
+}
+
+/// One of [`Against`]'s values against the noise's rms (mm; the rows'
+/// scale times `rms_mm`, the recordings' own) for one strategy's rows, one
+/// line per method, with interval bars.
+fn noise_plot(strategy: &str, rows: &[&SweepRow], rms_mm: f64, shown: Against) -> String {
     let methods = distinct(rows.iter().map(|r| r.method.as_str()));
+    let x = |r: &SweepRow| f64::from(r.noise) * rms_mm;
     let points = |m: &str| -> Vec<(f64, Estimate)> {
         let of = rows.iter().filter(|r| r.method == m);
-        of.map(|r| (f64::from(r.noise), r.error_mm)).filter(|(_, e)| plottable(e.value)).collect()
+        let pts = of.map(|r| (x(r), (shown.value)(r)));
+        pts.filter(|(x, e)| plottable(*x) && plottable(e.value)).collect()
     };
-    let xs = rows.iter().map(|r| f64::from(r.noise)).filter(|x| plottable(*x));
-    let x_max = xs.fold(0.0f64, f64::max).max(1.0);
-    let highs = rows.iter().flat_map(|r| [r.error_mm.value, r.error_mm.high]);
-    let y_max = highs.filter(|v| plottable(*v)).fold(1.0f64, f64::max) * 1.1;
+    let xs = rows.iter().map(|r| x(r)).filter(|x| plottable(*x));
+    let x_max = xs.fold(0.0f64, f64::max).max(0.5);
+    let highs = rows.iter().flat_map(|r| [(shown.value)(r).value, (shown.value)(r).high]);
+    let y_max = highs.filter(|v| plottable(*v)).fold(0.1f64, f64::max) * 1.1;
     svg((460, 340), |root| -> Drawn {
-        let title = format!("Placement error, {strategy}");
-        let mut c = chart(root, &title, -0.1..x_max * 1.08, 0.0..y_max)?;
+        let title = format!("{}, {strategy}", shown.title);
+        let mut c = chart(root, &title, -0.05 * x_max..x_max * 1.08, 0.0..y_max)?;
         c.configure_mesh()
-            .x_desc("tracking noise (× the recordings')")
-            .y_desc("error (mm)")
+            .x_desc("tracking noise (mm rms per joint and axis)")
+            .y_desc(shown.y)
             .x_label_formatter(&tick)
             .y_label_formatter(&tick)
             .label_style(font(13))

@@ -169,9 +169,9 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     for heading in SECTIONS {
         assert!(page.contains(&page::escape(heading)), "{heading}");
     }
-    // Accuracy 1, noise 2 (lift, slide), performance 3 (linear, log,
-    // reference), one per scenario.
-    assert_eq!(svgs(&page), 1 + 2 + 3 + 2);
+    // Accuracy 1, noise 4 (error and drops, lift and slide), performance 3
+    // (linear, log, reference), one per scenario.
+    assert_eq!(svgs(&page), 1 + 4 + 3 + 2);
     for text in THESIS_NUMBERS {
         assert!(page.contains(text), "{text}");
     }
@@ -189,6 +189,7 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
     assert!(page.contains("--out &#39;a b&#39;"));
     assert!(page.contains("2.6 [1.9, 3.3]") && page.contains("+ contact damper"));
     assert!(page.contains("0.72 mm") && page.contains("— [—, —]"), "the sweep's numbers");
+    assert!(page.contains("×2 (1.44 mm)") && page.contains("mm rms per joint and axis"));
     assert_self_contained(&page);
 }
 
@@ -215,14 +216,14 @@ fn bad_numbers_and_empty_data_neither_panic_nor_lose_plots() {
     sweep.rows[0].error_mm = Estimate { value: f64::MAX, low: f64::NAN, high: f64::INFINITY };
     sweep.rows[1].noise = f32::NAN;
     let page = html(&data);
-    assert_eq!(svgs(&page), 8, "{}", page.matches("could not be drawn").count());
+    assert_eq!(svgs(&page), 10, "{}", page.matches("could not be drawn").count());
     assert!(page.contains("The run stopped: the world rejected a call"));
     // With no thesis rows in the study, the published ones are shown.
     assert!(THESIS_NUMBERS.iter().all(|t| page.contains(t)));
     let huge =
         ThesisResult { method: "coulomb".into(), mean_mm: f64::MAX, sd_mm: 1.0, median_mm: 1.0 };
     data.accuracy.as_mut().unwrap().data.thesis = vec![huge];
-    assert_eq!(svgs(&html(&data)), 8);
+    assert_eq!(svgs(&html(&data)), 10);
     data.bench.as_mut().unwrap().data.sweep.clear();
     data.accuracy.as_mut().unwrap().data.methods.clear();
     data.sweep.as_mut().unwrap().data.rows.clear();

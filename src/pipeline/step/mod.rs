@@ -4,6 +4,7 @@
 //! [`InteractionWorld::apply_hand_forces`], turns the hand poses set before
 //! it into forces on the objects, stage by stage, one file each:
 //!
+//! 0. `follow.rs`: the hands that act follow the tracked hands;
 //! 1. `clear.rs`: last step's hand forces are cleared;
 //! 2. `keep.rs`: existing contacts are kept or end;
 //! 3. `find.rs`: new contacts begin, found by the collision driver among
@@ -31,6 +32,7 @@ mod apply;
 mod avx2;
 mod clear;
 mod find;
+mod follow;
 mod grab;
 mod keep;
 pub(super) mod near;
@@ -79,6 +81,7 @@ impl InteractionWorld {
             step.near.forget();
         }
         self.events.clear();
+        self.follow_hands();
         self.clear_forces();
         contact_stages(self, &mut step);
         self.scratch = step;

@@ -61,6 +61,40 @@ pub const MIN_HOLD: f64 = 0.15;
 /// any tracker's frame interval, so no closing falls between samples.
 pub const SAMPLE_STEP: f64 = 0.005;
 
+/// How long a tracker's grab or pinch strength must stay at or above
+/// [`spans::STRENGTH_CLOSED`] for the tracker itself to report a hold (s):
+/// longer than [`MIN_HOLD`], so every such hold is long enough to judge.
+pub const TRACKER_HOLD: f64 = 0.2;
+
+/// The holds the tracker itself reports for `track`'s hand: each span (s)
+/// in which its grab or pinch strength stays at or above
+/// [`spans::STRENGTH_CLOSED`] for at least [`TRACKER_HOLD`], sampled every
+/// [`SAMPLE_STEP`]. None for a tracker that reports no strengths.
+pub fn tracker_holds(playback: &Playback, track: usize) -> Vec<(f64, f64)> {
+    let samples = (playback.duration / SAMPLE_STEP).floor() as usize + 1;
+    let closed = |k: usize| {
+        let hand = playback.sample(track, k as f64 * SAMPLE_STEP);
+        let strength = hand.map(|h| h.grab.unwrap_or(0.0).max(h.pinch.unwrap_or(0.0)));
+        strength.is_some_and(|s| s >= spans::STRENGTH_CLOSED)
+    };
+    let mut out = Vec::new();
+    let mut from = None;
+    for k in 0..=samples {
+        match (from, k < samples && closed(k)) {
+            (None, true) => from = Some(k),
+            (Some(first), false) => {
+                let (a, b) = (first as f64 * SAMPLE_STEP, (k - 1) as f64 * SAMPLE_STEP);
+                if b - a >= TRACKER_HOLD - 0.5 * SAMPLE_STEP {
+                    out.push((a, b));
+                }
+                from = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
 /// Whether a hand is closed in a power grasp (a fist) rather than a
 /// precision one: the tracker's grab strength is at least ½, or, where it
 /// reports none, the fingers' curl is.
@@ -111,6 +145,15 @@ fn grasp_point(hand: &HandSample, reading: &Reading) -> (Vec3, Quat) {
         Some(Quat::from_mat3(&Mat3::from_cols(x, y, x.cross(y))).normalize())
     });
     (point, turned.unwrap_or(palm))
+}
+
+/// The site the grasp point takes for `track`'s hand at `t`, and the
+/// hand's aperture then (m): `None` where the hand is not tracked.
+pub fn site_at(playback: &Playback, track: usize, t: f64) -> Option<(Vec3, Quat, f32)> {
+    let hand = playback.sample(track, t)?;
+    let reading = Reading::of(&hand);
+    let (point, rotation) = grasp_point(&hand, &reading);
+    Some((point, rotation, reading.aperture))
 }
 
 /// A hand at one sample: its fingertips and what each signal reads.

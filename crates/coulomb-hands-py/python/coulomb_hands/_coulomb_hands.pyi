@@ -120,6 +120,7 @@ class Config:
     stability_limit: bool
     grab: Optional[str]
     hand_friction: bool
+    tracking: Optional[dict[str, Any]]
     def __init__(self, **fields: Any) -> None:
         """The default config with `fields` changed."""
     @staticmethod
@@ -223,7 +224,14 @@ class World:
         """Poses a hand's 16 bones directly. A bad pose raises `PoseError` naming the
         bone, and changes nothing."""
     def hand_pose(self, hand: int) -> Optional[HandPose]:
-        """The hand's current pose, or None while untracked."""
+        """The hand that acts, or None while untracked: the pose its contacts saw in the
+        last step (the pose set, for a hand tracked since), the tracked hand with the
+        tracker's jitter taken out by `config.tracking`."""
+    def tracked_pose(self, hand: int) -> Optional[HandPose]:
+        """The hand as it was last set, or None while untracked."""
+    def hand_jitter(self, hand: int) -> Optional[float]:
+        """The jitter measured on the hand (m, rms per axis, the hand's own tremor of
+        about 30 µm included; 0 until measured), or None when `config.tracking` is None."""
     def clear_hand(self, hand: int) -> None:
         """Marks a hand untracked: its contacts end at the next step."""
     def step(self, n: int = 1) -> None:
@@ -280,12 +288,14 @@ def eval_accuracy(
     methods: Optional[Sequence[str]] = None,
     strategies: Optional[Sequence[str]] = None,
     noise: float = 1.0,
+    noise_mm: Optional[float] = None,
     perception: float = 1.0,
     noise_from: Optional[Sequence[Path]] = None,
     threads: Optional[int] = None,
 ) -> dict[str, Any]:
     """The positioning-accuracy study (thesis 5.2); returns `coulomb-hands eval
-    accuracy --json`'s data."""
+    accuracy --json`'s data. `noise` scales the recordings' tracking noise;
+    `noise_mm`, instead, sets its rms per joint and axis (mm)."""
 
 def bench(
     *,

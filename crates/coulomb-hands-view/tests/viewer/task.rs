@@ -28,6 +28,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
         trials: 3,
         seed: 9,
         noise: Some(1.0),
+        noise_rms_mm: Some(0.72),
         perception: Some(1.0),
         methods,
         thesis: thesis_table(),

@@ -1,0 +1,211 @@
+//! The tracker's jitter, measured on the hand as it is tracked.
+//!
+//! A hand moves smoothly: over a tenth of a second its joints follow
+//! paths a parabola fits (its voluntary motion lies below about 5 Hz,
+//! Brooks 1990). A tracker's error does not. So every
+//! [`SAMPLE_INTERVAL`] each point is compared with the Savitzky–Golay
+//! parabola through its samples within ±[`HALF_WINDOW`] intervals (±70
+//! ms), and what the parabola cannot explain is jitter. The jitter σ̂ is
+//! the median over a window of seconds of those residuals' mean square
+//! per axis, scaled so that white noise of rms σ per axis reads σ. The
+//! median, so that a hand that jumps (a tracker that finds it again) or a
+//! brief glitch does not count; so σ̂ is the jitter a tracker makes most
+//! of the time, below its rms when it also glitches.
+//!
+//! A residual is known [`HALF_WINDOW`] intervals late, and σ̂ follows a
+//! change of tracker over about half the window.
+//!
+//! Part of it is the hand's own: a still hand trembles by about 30 µm
+//! (physiological finger tremor, 8–12 Hz: Growdon et al. 2000, Elble
+//! 2003), and a tracker that reports it reports the hand. Only what the
+//! meter finds beyond that is the tracker's ([`tracker_jitter`]).
+
+use glam::Vec3;
+
+/// How often the points are sampled (s): 100 Hz, the rate of most hand
+/// trackers.
+pub const SAMPLE_INTERVAL: f32 = 0.01;
+/// Samples each side of the one judged: the parabola spans ±70 ms, long
+/// enough that a hand's motion fits it and short enough that a tracker's
+/// jitter does not.
+pub const HALF_WINDOW: usize = 7;
+const SPAN: usize = 2 * HALF_WINDOW + 1;
+
+/// A still hand's own tremor (m): the physiological finger tremor's mean
+/// amplitude at rest, about 30 µm (Growdon et al. 2000).
+pub const TREMOR: f32 = 30.0e-6;
+
+/// The tracker's part of a measured jitter `measured` (m): what is beyond
+/// the hand's own [`TREMOR`], the two independent so their variances
+/// adding.
+pub fn tracker_jitter(measured: f32) -> f32 {
+    (measured * measured - TREMOR * TREMOR).max(0.0).sqrt()
+}
+
+/// The quadratic Savitzky–Golay smoothing weight of the sample `i` places
+/// from the centre (Savitzky & Golay 1964): the parabola fitted by least
+/// squares through the span, read at its centre.
+fn savitzky_golay(i: f32) -> f32 {
+    let m = HALF_WINDOW as f32;
+    (3.0 * (3.0 * m * m + 3.0 * m - 1.0) - 15.0 * i * i)
+        / ((2.0 * m + 3.0) * (2.0 * m + 1.0) * (2.0 * m - 1.0))
+}
+
+/// Measures the jitter of `N` points of one tracked hand.
+#[derive(Debug, Clone)]
+pub struct JitterMeter<const N: usize> {
+    /// The last [`SPAN`] samples, oldest first once full (a ring).
+    samples: Vec<[Vec3; N]>,
+    next: usize,
+    /// Time since the last sample (s).
+    since: f32,
+    /// Each judged sample's mean square residual per axis (m²), a ring of
+    /// the window's length.
+    history: Vec<f32>,
+    written: usize,
+    window: usize,
+    /// The history sorted, reused.
+    scratch: Vec<f32>,
+    jitter: f32,
+}
+
+impl<const N: usize> JitterMeter<N> {
+    /// A meter whose median spans `window` seconds.
+    pub fn new(window: f32) -> Self {
+        let window = ((window / SAMPLE_INTERVAL).round() as usize).max(1);
+        JitterMeter {
+            samples: Vec::with_capacity(SPAN),
+            next: 0,
+            since: 0.0,
+            history: Vec::with_capacity(window),
+            written: 0,
+            window,
+            scratch: Vec::with_capacity(window),
+            jitter: 0.0,
+        }
+    }
+
+    /// The jitter (m, rms per axis as white noise would give it), 0 until
+    /// a first sample is judged.
+    pub fn jitter(&self) -> f32 {
+        self.jitter
+    }
+
+    /// The hand was lost: the next points start a new path. What was
+    /// measured is kept, as the tracker's.
+    pub fn break_path(&mut self) {
+        self.samples.clear();
+        self.next = 0;
+        self.since = 0.0;
+    }
+
+    /// The points `dt` (s) after the last call.
+    pub fn observe(&mut self, points: &[Vec3; N], dt: f32) {
+        self.since += dt;
+        // Half a step early, so rounding never skips a sample.
+        if !self.samples.is_empty() && self.since < SAMPLE_INTERVAL - 0.5 * dt {
+            return;
+        }
+        self.since = 0.0;
+        if self.samples.len() < SPAN {
+            self.samples.push(*points);
+        } else {
+            self.samples[self.next] = *points;
+        }
+        self.next = (self.next + 1) % SPAN;
+        if self.samples.len() == SPAN {
+            self.judge();
+        }
+    }
+
+    /// The residual of the centre sample, added to the history, and the
+    /// median taken.
+    fn judge(&mut self) {
+        let sample = |k: usize| &self.samples[(self.next + k) % SPAN];
+        let mut sum = 0.0;
+        for j in 0..N {
+            let mut fit = Vec3::ZERO;
+            for k in 0..SPAN {
+                fit += savitzky_golay(k as f32 - HALF_WINDOW as f32) * sample(k)[j];
+            }
+            sum += (sample(HALF_WINDOW)[j] - fit).length_squared();
+        }
+        // White noise leaves 1 − w₀ of its variance in the residual.
+        let variance = sum / (3 * N) as f32 / (1.0 - savitzky_golay(0.0));
+        if self.history.len() < self.window {
+            self.history.push(variance);
+        } else {
+            self.history[self.written % self.window] = variance;
+        }
+        self.written += 1;
+        self.scratch.clear();
+        self.scratch.extend_from_slice(&self.history);
+        let middle = self.scratch.len() / 2;
+        let (_, median, _) = self.scratch.select_nth_unstable_by(middle, f32::total_cmp);
+        self.jitter = median.sqrt();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+    use rand_distr::{Distribution, Normal};
+
+    #[test]
+    fn the_weights_fit_a_parabola_exactly() {
+        let weight = |k: usize| savitzky_golay(k as f32 - HALF_WINDOW as f32);
+        let total: f32 = (0..SPAN).map(weight).sum();
+        assert!((total - 1.0).abs() < 1e-6, "{total}");
+        let parabola = |k: usize| {
+            let i = k as f32 - HALF_WINDOW as f32;
+            2.0 + 0.3 * i - 0.05 * i * i
+        };
+        let fit: f32 = (0..SPAN).map(|k| weight(k) * parabola(k)).sum();
+        assert!((fit - 2.0).abs() < 1e-5, "{fit}");
+    }
+
+    #[test]
+    fn a_smoothly_moving_hand_has_no_jitter_and_white_noise_reads_its_rms() {
+        let mut smooth = JitterMeter::<8>::new(1.0);
+        let mut noisy = JitterMeter::<8>::new(1.0);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let normal = Normal::new(0.0f32, 0.0013).unwrap();
+        let mut shake = || Vec3::new(normal.sample(&mut rng), normal.sample(&mut rng), 0.0);
+        for k in 0..3000 {
+            let t = k as f32 * 0.001;
+            // Eight points on a reach: 12 cm at up to 0.13 m/s, each point
+            // also closing in on the hand's centre, faster the farther out.
+            let path: [Vec3; 8] = std::array::from_fn(|j| {
+                let reach = Vec3::new(0.06 * (1.0 - (2.1 * t).cos()), 0.3, 0.0);
+                reach + Vec3::Y * 0.01 * (j as f32 + 1.0) * t * t
+            });
+            smooth.observe(&path, 0.001);
+            noisy.observe(&path.map(|p| p + shake()), 0.001);
+        }
+        assert!(smooth.jitter() < TREMOR, "{}", smooth.jitter());
+        // Noise of 1.3 mm rms on two axes of each point: two thirds of the
+        // variance per axis; the median of 16 noisy axes reads a little low.
+        let expected = 0.0013 * (2.0f32 / 3.0).sqrt();
+        assert!((noisy.jitter() - expected).abs() < 0.1 * expected, "{}", noisy.jitter());
+    }
+
+    #[test]
+    fn the_hands_own_tremor_is_not_the_trackers() {
+        assert_eq!(tracker_jitter(0.0), 0.0);
+        assert_eq!(tracker_jitter(TREMOR), 0.0);
+        assert!((tracker_jitter(0.0005) - 0.0005).abs() < 1e-6);
+        assert!((tracker_jitter(50e-6) - 40e-6).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_jump_does_not_count_as_jitter() {
+        let mut meter = JitterMeter::<1>::new(2.0);
+        for k in 0..3000 {
+            let x = if k < 1500 { 0.0 } else { 0.05 };
+            meter.observe(&[Vec3::new(x, 0.2, 0.0)], 0.001);
+        }
+        // A still point's residual is float rounding, far below tremor.
+        assert!(meter.jitter() < 1e-7, "{}", meter.jitter());
+    }
+}
