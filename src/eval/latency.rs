@@ -21,7 +21,7 @@
 
 use super::grip::grip;
 use super::noise::{Residual, TrackingNoise};
-use super::{NoiseUnit, check_scale, check_some};
+use super::{NoiseUnit, check_some};
 use crate::hand::{HandPose, Side};
 pub use crate::output::report::{LatencyRow, LatencyStudy};
 use crate::pipeline::{InteractionConfig, InteractionWorld};
@@ -139,22 +139,15 @@ impl LatencyOptions {
 
 /// Runs the study: every [`Motion`] at every noise strength.
 pub fn latency(options: &LatencyOptions) -> Result<LatencyStudy, RunError> {
-    let field = match options.noise_unit {
-        NoiseUnit::Times => "noise",
-        NoiseUnit::RmsMm => "noise-mm",
-    };
     for &level in &options.noise {
-        check_scale(field, level)?;
+        options.noise_unit.check(level)?;
     }
     check_some("noise", options.noise.len())?;
     check_some("streams", options.streams)?;
     let noise = TrackingNoise::load(&options.noise_from)?;
     let mut rows = Vec::new();
     for &level in &options.noise {
-        let scale = match options.noise_unit {
-            NoiseUnit::Times => level,
-            NoiseUnit::RmsMm => noise.scale_for_rms_mm(level)?,
-        };
+        let scale = options.noise_unit.scale(&noise, level)?;
         let streams = if scale > 0.0 { options.streams } else { 1 };
         for motion in Motion::ALL {
             let (tracked, acting) = mean_paths(motion, &options.config, &noise, scale, streams)?;
@@ -167,7 +160,7 @@ pub fn latency(options: &LatencyOptions) -> Result<LatencyStudy, RunError> {
             rows.push(LatencyRow {
                 motion: motion.name().to_string(),
                 noise: scale,
-                noise_rms_mm: f64::from(scale) * f64::from(noise.rms) * 1e3,
+                noise_rms_mm: noise.rms_mm(scale),
                 latency_ms,
                 gain,
             });

@@ -69,6 +69,35 @@ pub enum NoiseUnit {
     RmsMm,
 }
 
+impl NoiseUnit {
+    /// The noise strengths asked for and what they count: `rms_mm` when
+    /// given (`--noise-mm`), else `times` (`--noise`).
+    pub fn choose<T>(times: T, rms_mm: Option<T>) -> (T, NoiseUnit) {
+        match rms_mm {
+            Some(mm) => (mm, NoiseUnit::RmsMm),
+            None => (times, NoiseUnit::Times),
+        }
+    }
+
+    /// The scale on `noise`'s residuals of the strength `level` in this
+    /// unit.
+    pub(crate) fn scale(self, noise: &TrackingNoise, level: f32) -> Result<f32, RunError> {
+        match self {
+            NoiseUnit::Times => Ok(level),
+            NoiseUnit::RmsMm => noise.scale_for_rms_mm(level),
+        }
+    }
+
+    /// Checks a strength in this unit: finite and ≥ 0, named by its option.
+    pub(crate) fn check(self, level: f32) -> Result<(), RunError> {
+        let option = match self {
+            NoiseUnit::Times => "noise",
+            NoiseUnit::RmsMm => "noise-mm",
+        };
+        check_scale(option, level)
+    }
+}
+
 /// How every trial of a study runs, besides its noise strength: shared
 /// by [`AccuracyOptions`], [`sweep::SweepOptions`] and
 /// [`ablation::AblationOptions`].
@@ -105,23 +134,12 @@ impl Conditions {
     /// The scale on `noise`'s residuals of the strength `level`, in this
     /// study's [`NoiseUnit`].
     pub(crate) fn scale(&self, noise: &TrackingNoise, level: f32) -> Result<f32, RunError> {
-        match self.noise_unit {
-            NoiseUnit::Times => Ok(level),
-            NoiseUnit::RmsMm => noise.scale_for_rms_mm(level),
-        }
+        self.noise_unit.scale(noise, level)
     }
 
     /// Checks a noise strength: finite and ≥ 0, in mm or times.
     pub(crate) fn check_noise(&self, level: f32) -> Result<(), RunError> {
-        check_scale(self.noise_field(), level)
-    }
-
-    /// The option's name in errors.
-    fn noise_field(&self) -> &'static str {
-        match self.noise_unit {
-            NoiseUnit::Times => "noise",
-            NoiseUnit::RmsMm => "noise-mm",
-        }
+        self.noise_unit.check(level)
     }
 }
 
@@ -258,7 +276,7 @@ pub fn accuracy(
         trials: options.trials,
         seed: options.seed,
         noise: Some(scale),
-        noise_rms_mm: Some(f64::from(scale) * f64::from(noise.rms) * 1e3),
+        noise_rms_mm: Some(noise.rms_mm(scale)),
         perception: Some(options.conditions.perception),
         methods,
         thesis: thesis_table(),

@@ -211,6 +211,11 @@ impl TrackingNoise {
         Ok(noise)
     }
 
+    /// These residuals' rms per joint and axis when scaled by `scale` (mm).
+    pub fn rms_mm(&self, scale: f32) -> f64 {
+        f64::from(scale) * f64::from(self.rms) * 1e3
+    }
+
     /// The scale that gives these residuals an rms of `mm` per joint and
     /// axis. An error if they have none to scale: less than
     /// [`JITTERLESS`], float rounding rather than a tracker's error.

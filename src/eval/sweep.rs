@@ -60,7 +60,7 @@ fn summary(noise: &TrackingNoise) -> NoiseSummary {
     let lengths: Vec<f64> = noise.dropout_lengths.iter().map(|l| l * 1e3).collect();
     NoiseSummary {
         sources: noise.sources.clone(),
-        rms_mm: f64::from(noise.rms) * 1e3,
+        rms_mm: noise.rms_mm(1.0),
         dropouts_per_s: noise.dropout_rate,
         dropout_ms: stats::describe(&lengths).0,
     }

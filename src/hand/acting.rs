@@ -71,34 +71,32 @@ impl Default for TrackingFilter {
 const MAX_JITTER_WINDOW: f32 = 60.0;
 
 impl TrackingFilter {
-    /// Checks every field; the error names the first bad one, as a config
-    /// names it (`gross.beta`).
+    /// Checks every field; the error names the first bad one as
+    /// [`crate::InteractionConfig`] names it (`tracking.gross.beta`).
     pub fn validate(&self) -> Result<(), (&'static str, String)> {
-        self.gross.validate().map_err(|(field, why)| (gross_field(field), why))?;
-        self.shape.validate().map_err(|(field, why)| (shape_field(field), why))?;
+        self.gross.validate([
+            "tracking.gross.min_cutoff",
+            "tracking.gross.beta",
+            "tracking.gross.derivative_cutoff",
+        ])?;
+        self.shape.validate([
+            "tracking.shape.min_cutoff",
+            "tracking.shape.beta",
+            "tracking.shape.derivative_cutoff",
+        ])?;
         let w = self.jitter_window;
         if !(w.is_finite() && w > 0.0 && w <= MAX_JITTER_WINDOW) {
             let why = format!("must be in (0, {MAX_JITTER_WINDOW}] s, got {w}");
-            return Err(("jitter_window", why));
+            return Err(("tracking.jitter_window", why));
         }
         Ok(())
     }
 }
 
-fn gross_field(field: &str) -> &'static str {
-    match field {
-        "min_cutoff" => "gross.min_cutoff",
-        "beta" => "gross.beta",
-        _ => "gross.derivative_cutoff",
-    }
-}
-
-fn shape_field(field: &str) -> &'static str {
-    match field {
-        "min_cutoff" => "shape.min_cutoff",
-        "beta" => "shape.beta",
-        _ => "shape.derivative_cutoff",
-    }
+/// Of [`POINTS`], the base of finger `f`'s capsule `p`; its end is the
+/// next.
+fn base_index(f: usize, p: usize) -> usize {
+    1 + 6 * f + 2 * p
 }
 
 /// A pose's [`POINTS`] (world, m).
@@ -106,8 +104,8 @@ fn points(pose: &HandPose) -> [Vec3; POINTS] {
     let mut out = [pose.palm.center; POINTS];
     for (f, finger) in pose.fingers.iter().enumerate() {
         for (p, bone) in finger.iter().enumerate() {
-            out[1 + 6 * f + 2 * p] = bone.a;
-            out[2 + 6 * f + 2 * p] = bone.b;
+            out[base_index(f, p)] = bone.a;
+            out[base_index(f, p) + 1] = bone.b;
         }
     }
     out
@@ -204,8 +202,9 @@ impl ActingHand {
         set(&mut acting.palm.center, raw[0] + lags[0]);
         for (f, finger) in acting.fingers.iter_mut().enumerate() {
             for (p, bone) in finger.iter_mut().enumerate() {
-                set(&mut bone.a, raw[1 + 6 * f + 2 * p] + lags[1 + 6 * f + 2 * p]);
-                set(&mut bone.b, raw[2 + 6 * f + 2 * p] + lags[2 + 6 * f + 2 * p]);
+                let a = base_index(f, p);
+                set(&mut bone.a, raw[a] + lags[a]);
+                set(&mut bone.b, raw[a + 1] + lags[a + 1]);
             }
         }
         changed |= acting.palm.rotation != rotation || acting.palm.half_extents != palm_extents;

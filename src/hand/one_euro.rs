@@ -33,17 +33,20 @@ pub struct OneEuro {
 
 impl OneEuro {
     /// Checks that every field is finite, the cutoffs positive and `beta`
-    /// not negative; the error names the field.
-    pub fn validate(&self) -> Result<(), (&'static str, String)> {
+    /// not negative; the error names the field by `names`, the names of
+    /// `min_cutoff`, `beta` and `derivative_cutoff` where the filter is
+    /// set.
+    pub fn validate(&self, names: [&'static str; 3]) -> Result<(), (&'static str, String)> {
+        let [min_cutoff, beta, derivative_cutoff] = names;
         for (field, v) in
-            [("min_cutoff", self.min_cutoff), ("derivative_cutoff", self.derivative_cutoff)]
+            [(min_cutoff, self.min_cutoff), (derivative_cutoff, self.derivative_cutoff)]
         {
             if !(v.is_finite() && v > 0.0) {
                 return Err((field, format!("must be a positive number of Hz, got {v}")));
             }
         }
         if !(self.beta.is_finite() && self.beta >= 0.0) {
-            return Err(("beta", format!("must be finite and ≥ 0, got {}", self.beta)));
+            return Err((beta, format!("must be finite and ≥ 0, got {}", self.beta)));
         }
         Ok(())
     }
@@ -298,12 +301,13 @@ mod tests {
 
     #[test]
     fn settings_out_of_range_name_their_field() {
+        const NAMES: [&str; 3] = ["min_cutoff", "beta", "derivative_cutoff"];
         let bad = OneEuro { beta: -1.0, ..FILTER };
-        assert_eq!(bad.validate().unwrap_err().0, "beta");
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "beta");
         let bad = OneEuro { min_cutoff: f32::NAN, ..FILTER };
-        assert_eq!(bad.validate().unwrap_err().0, "min_cutoff");
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "min_cutoff");
         let bad = OneEuro { derivative_cutoff: 0.0, ..FILTER };
-        assert_eq!(bad.validate().unwrap_err().0, "derivative_cutoff");
-        assert!(FILTER.validate().is_ok());
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "derivative_cutoff");
+        assert!(FILTER.validate(NAMES).is_ok());
     }
 }

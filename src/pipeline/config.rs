@@ -260,7 +260,7 @@ impl InteractionConfig {
             return err("probe_offset", format!("must be positive, got {}", self.probe_offset));
         }
         if let Some(Err((field, reason))) = self.tracking.map(|t| t.validate()) {
-            return err(tracking_field(field), reason);
+            return err(field, reason);
         }
         Ok(())
     }
@@ -281,18 +281,5 @@ impl InteractionConfig {
         p.contact_softness.natural_frequency = frequency;
         let static_frequency = p.static_contact_softness.natural_frequency;
         p.static_contact_softness.natural_frequency = static_frequency.max(frequency);
-    }
-}
-
-/// A field of [`TrackingFilter`] as a config names it.
-fn tracking_field(field: &str) -> &'static str {
-    match field {
-        "gross.min_cutoff" => "tracking.gross.min_cutoff",
-        "gross.beta" => "tracking.gross.beta",
-        "gross.derivative_cutoff" => "tracking.gross.derivative_cutoff",
-        "shape.min_cutoff" => "tracking.shape.min_cutoff",
-        "shape.beta" => "tracking.shape.beta",
-        "shape.derivative_cutoff" => "tracking.shape.derivative_cutoff",
-        _ => "tracking.jitter_window",
     }
 }

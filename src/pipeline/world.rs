@@ -298,19 +298,17 @@ impl InteractionWorld {
     pub fn set_hand_pose(&mut self, hand: HandId, pose: &HandPose) -> Result<(), WorldError> {
         let slot = self.hands.get_mut(hand.0 as usize).ok_or(WorldError::NoSuchHand(hand))?;
         firewall::pose(hand.0, pose)?;
-        match slot.acting.as_mut() {
-            Some(acting) => {
-                if slot.pose.is_none() {
-                    acting.begin(pose);
-                    slot.pose = Some(pose.clone());
-                    slot.pose_mark += 1;
-                }
-                slot.tracked = Some(pose.clone());
+        let begins = slot.pose.is_none();
+        if let Some(acting) = slot.acting.as_mut() {
+            if begins {
+                acting.begin(pose);
             }
-            None => {
-                slot.pose = Some(pose.clone());
-                slot.pose_mark += 1;
-            }
+            slot.tracked = Some(pose.clone());
+        }
+        // With the filter, the hand that acts moves in the step's first stage.
+        if begins || slot.acting.is_none() {
+            slot.pose = Some(pose.clone());
+            slot.pose_mark += 1;
         }
         self.record(|| Call::SetHandPose(hand.0, Box::new(pose.clone())));
         Ok(())

@@ -215,7 +215,7 @@ fn release_site(sites: &[HoldSite], latest: f64) -> Option<HoldSite> {
 /// or the hold's first instant if none is. Unchanged where that is its
 /// most closed instant.
 /// `sites` are the hold's ([`hold_sites`]).
-pub(crate) fn let_go_site(
+fn let_go_site(
     sites: &[HoldSite],
     site: &GraspSite,
     settle: f64,
@@ -228,6 +228,23 @@ pub(crate) fn let_go_site(
         }
         _ => *site,
     }
+}
+
+/// Moves object `id`, fixed at `site` with a grip that settles in `settle`
+/// (s), to where its fixture lets go at the latest ([`let_go_site`] of the
+/// hold's `sites` and the hand's `slip_bound`, m); returns that site.
+pub(crate) fn seat_for_judging(
+    world: &mut InteractionWorld,
+    id: ObjectId,
+    (sites, site): (&[HoldSite], &GraspSite),
+    settle: f64,
+    slip_bound: f32,
+) -> Result<GraspSite, RunError> {
+    let at = let_go_site(sites, site, settle, (slip_bound, world.config().gravity.length()));
+    if at.closed_at != site.closed_at {
+        world.place_object(id, at.point, at.rotation)?;
+    }
+    Ok(at)
 }
 
 /// The drift that is a slip at `site` (m): twice the closing hand's index
@@ -351,13 +368,9 @@ impl Observer for Closings {
                 world.set_object_locked(id, true)?;
                 j.settle = grip_settling(world, id);
                 j.id = Some(id);
-                let bound = (j.verdict.slip_bound, world.config().gravity.length());
-                let at = let_go_site(&j.sites, &j.site, j.settle, bound);
-                if at.closed_at != j.site.closed_at {
-                    j.site = at;
-                    (j.verdict.closed_at, j.verdict.site) = (at.closed_at, at.point.to_array());
-                    world.place_object(id, at.point, at.rotation)?;
-                }
+                let hold = (&j.sites[..], &j.site);
+                j.site = seat_for_judging(world, id, hold, j.settle, j.verdict.slip_bound)?;
+                (j.verdict.closed_at, j.verdict.site) = (j.site.closed_at, j.site.point.to_array());
             }
             let Some(id) = j.id.filter(|_| j.fixed) else { continue };
             let gripped = is_gripped(world, id);

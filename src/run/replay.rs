@@ -310,12 +310,9 @@ pub fn place_at_grasp(
         *grasps.get(index).ok_or(RunError::NoGrasp { found: grasps.len(), wanted: index })?;
     let id = world.add_object(&object.at(&site, "grasped"))?;
     world.set_object_locked(id, true)?;
-    let bound = (closing::slip_bound(playback, &site), world.config().gravity.length());
-    let settle = closing::grip_settling(world, id);
-    let at = closing::let_go_site(&closing::hold_sites(playback, &site), &site, settle, bound);
-    if at.closed_at != site.closed_at {
-        world.place_object(id, at.point, at.rotation)?;
-    }
+    let hold = (&closing::hold_sites(playback, &site)[..], &site);
+    let (settle, bound) = (closing::grip_settling(world, id), closing::slip_bound(playback, &site));
+    let at = closing::seat_for_judging(world, id, hold, settle, bound)?;
     Ok((Fixture { object: id, release_by: at.closed_at }, at))
 }
 

@@ -159,10 +159,7 @@ fn eval_accuracy<'py>(
             .map(|s| s.parse::<Strategy>().map_err(ArgumentError::new_err))
             .collect::<PyResult<_>>()?,
     };
-    let (noise, noise_unit) = match noise_mm {
-        Some(mm) => (mm, NoiseUnit::RmsMm),
-        None => (noise, NoiseUnit::Times),
-    };
+    let (noise, noise_unit) = NoiseUnit::choose(noise, noise_mm);
     let conditions = Conditions {
         perception,
         noise_from: noise_from.unwrap_or_default(),

@@ -56,10 +56,7 @@ pub struct DrawArgs {
 impl DrawArgs {
     /// The noise strength asked for, and what it counts.
     pub fn noise(&self) -> (f32, NoiseUnit) {
-        match self.noise_mm {
-            Some(mm) => (mm, NoiseUnit::RmsMm),
-            None => (self.noise, NoiseUnit::Times),
-        }
+        NoiseUnit::choose(self.noise, self.noise_mm)
     }
 }
 

@@ -52,10 +52,7 @@ impl SweepArgs {
     /// Runs the sweep and prints its table, or one JSON object.
     pub fn run(self) -> Outcome {
         let show = shows_progress(&self.output);
-        let (noise, unit) = match self.noise_mm {
-            Some(mm) => (mm, NoiseUnit::RmsMm),
-            None => (self.noise, NoiseUnit::Times),
-        };
+        let (noise, unit) = NoiseUnit::choose(self.noise, self.noise_mm);
         let options = SweepOptions {
             users: self.users,
             trials: self.trials,
@@ -112,7 +109,7 @@ fn print_sweep(s: &SweepStudy) {
             r.method,
             r.strategy,
             format!("x{:.3}", r.noise).trim_end_matches('0').trim_end_matches('.'),
-            f64::from(r.noise) * s.noise.rms_mm,
+            s.noise.rms_mm_at(r.noise),
             ci(&r.error_mm, 1),
             num(r.median_mm, 1),
             ci(&r.time_s, 1),

@@ -41,6 +41,14 @@ pub struct NoiseSummary {
     pub dropout_ms: f64,
 }
 
+impl NoiseSummary {
+    /// The residuals' rms per joint and axis at `scale` times their own
+    /// (mm): what a row of that strength shook the hand by.
+    pub fn rms_mm_at(&self, scale: f32) -> f64 {
+        f64::from(scale) * self.rms_mm
+    }
+}
+
 /// One method, strategy and noise strength, over every seed's trials.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SweepRow {

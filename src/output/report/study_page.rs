@@ -4,7 +4,7 @@
 
 use super::page::{escape, plot, table};
 use super::plots::{Drawn, PALETTE, chart, font, legend_box, plottable, svg, tick};
-use super::{Ablation, Estimate, SweepRow, SweepStudy};
+use super::{Ablation, Estimate, NoiseSummary, SweepRow, SweepStudy};
 use plotters::prelude::*;
 use std::fmt::Write;
 
@@ -64,13 +64,13 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
              noise's rms, with its 95 % interval; one line per method."
         );
         let error = Against { title: "Placement error", y: "error (mm)", value: |r| r.error_mm };
-        plot(p, &noise_plot(strategy, &rows, s.noise.rms_mm, error), &caption);
+        plot(p, &noise_plot(strategy, &rows, &s.noise, error), &caption);
         let caption = format!(
             "{strategy}: times the cube fell out of the hand per trial, against the tracking \
              noise's rms, with its 95 % interval; one line per method."
         );
         let drops = Against { title: "Drops", y: "drops per trial", value: |r| r.drops };
-        plot(p, &noise_plot(strategy, &rows, s.noise.rms_mm, drops), &caption);
+        plot(p, &noise_plot(strategy, &rows, &s.noise, drops), &caption);
         p.push_str("</div>\n");
     }
     let rows: Vec<Vec<String>> = s
@@ -80,7 +80,7 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
             vec![
                 escape(&r.method),
                 escape(&r.strategy),
-                format!("#×{} ({:.2} mm)", r.noise, f64::from(r.noise) * s.noise.rms_mm),
+                format!("#×{} ({:.2} mm)", r.noise, s.noise.rms_mm_at(r.noise)),
                 format!("#{}", r.trials),
                 ci(&r.error_mm, 1),
                 ci(&r.time_s, 1),
@@ -114,11 +114,11 @@ struct Against {
 }
 
 /// One of [`Against`]'s values against the noise's rms (mm; the rows'
-/// scale times `rms_mm`, the recordings' own) for one strategy's rows, one
+/// scale times `noise`'s own) for one strategy's rows, one
 /// line per method, with interval bars.
-fn noise_plot(strategy: &str, rows: &[&SweepRow], rms_mm: f64, shown: Against) -> String {
+fn noise_plot(strategy: &str, rows: &[&SweepRow], noise: &NoiseSummary, shown: Against) -> String {
     let methods = distinct(rows.iter().map(|r| r.method.as_str()));
-    let x = |r: &SweepRow| f64::from(r.noise) * rms_mm;
+    let x = |r: &SweepRow| noise.rms_mm_at(r.noise);
     let points = |m: &str| -> Vec<(f64, Estimate)> {
         let of = rows.iter().filter(|r| r.method == m);
         let pts = of.map(|r| (x(r), (shown.value)(r)));
