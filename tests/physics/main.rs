@@ -18,6 +18,7 @@ mod live;
 mod live_feed;
 mod meshes;
 mod nearby;
+mod object_friction;
 mod pinch;
 mod push;
 mod recordings;

@@ -1,9 +1,7 @@
 //! A scenario's checks: what is measured on the run's history, and the
 //! bound it must meet.
 
-use crate::pipeline::InteractionWorld;
-use crate::run::RunError;
-use crate::run::drive::{Observer, StepView};
+pub use super::history::History;
 use glam::{Quat, Vec3};
 
 /// One check of a scenario file: a measure and its bound (`min`, `max` or
@@ -192,48 +190,20 @@ pub enum Measure {
         /// The target, `[x, z]` (world, m).
         target: [f32; 2],
     },
-}
-
-/// What a run recorded, step by step, for the checks.
-#[derive(Debug, Clone, Default)]
-pub struct History {
-    /// Physics step (s).
-    pub dt: f32,
-    /// Object names, in object order.
-    pub names: Vec<String>,
-    /// `poses[step][object]` after that step.
-    pub poses: Vec<Vec<(Vec3, Quat)>>,
-    /// `velocities[step][object]`: linear velocity after that step (m/s).
-    pub velocities: Vec<Vec<Vec3>>,
-    /// `contacts[step][object]`: hand contacts pressing on it (normal force
-    /// > 0) after that step.
-    pub contacts: Vec<Vec<u32>>,
-    /// `palms[step][hand]`: palm centre and rotation, if tracked.
-    pub palms: Vec<Vec<Option<(Vec3, Quat)>>>,
-    /// The world's gravity (m/s²), for ballistic predictions.
-    pub gravity: Vec3,
-}
-
-impl History {
-    /// An empty history of `world`'s objects.
-    pub fn new(world: &InteractionWorld) -> History {
-        let names = world.object_ids().map(|id| world.object_name(id).unwrap_or("").to_string());
-        let (dt, gravity) = (world.config().dt, world.config().gravity);
-        History { dt, gravity, names: names.collect(), ..History::default() }
-    }
-
-    /// The step whose state is the one at time `t` (clamped to the run).
-    fn step(&self, t: f32) -> usize {
-        ((t / self.dt).round().max(1.0) as usize - 1).min(self.poses.len().saturating_sub(1))
-    }
-
-    fn end(&self) -> f32 {
-        self.poses.len() as f32 * self.dt
-    }
-
-    pub(super) fn steps(&self, from: f32, to: Option<f32>) -> std::ops::RangeInclusive<usize> {
-        self.step(from)..=self.step(to.unwrap_or(self.end()))
-    }
+    /// The mean, over the steps of [`from`, `to`], of the hand contacts'
+    /// total force on the object (Eq. 3.10) along the unit world `axis`
+    /// (N): what the hands push or pull it with, to set against what
+    /// resists it, such as μ·m·g on the ground.
+    HandForce {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); `None` is the end of the run.
+        to: Option<f32>,
+        /// Unit axis (world) to measure along.
+        axis: Vec3,
+    },
 }
 
 /// What is wrong with a check, found before a run.
@@ -294,7 +264,8 @@ impl Check {
             | Measure::Contacts { object, .. }
             | Measure::ReleaseSpeed { object, .. }
             | Measure::LandingError { object, .. }
-            | Measure::LandingDistance { object, .. } => (vec![object.as_str()], None),
+            | Measure::LandingDistance { object, .. }
+            | Measure::HandForce { object, .. } => (vec![object.as_str()], None),
             Measure::DriftInHand { object, hand, .. }
             | Measure::TurnInHand { object, hand, .. } => (vec![object.as_str()], Some(*hand)),
             Measure::GroupDisplacement { except, .. } => {
@@ -327,6 +298,7 @@ impl Check {
         }
         let axis = match &self.measure {
             Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
+            Measure::HandForce { axis, .. } => Some(*axis),
             Measure::PathDeviation { path, .. }
                 if path.len() < 2 || path.iter().flatten().any(|v| !v.is_finite()) =>
             {
@@ -425,6 +397,12 @@ impl Check {
                     .fold(0.0, f32::max)
             }
             Measure::Contacts { object, at } => h.contacts[h.step(*at)][index(object)] as f32,
+            Measure::HandForce { object, from, to, axis } => {
+                let o = index(object);
+                let steps = h.steps(*from, *to);
+                let n = steps.clone().count() as f32;
+                steps.map(|s| h.hand_forces[s][o].dot(*axis)).sum::<f32>() / n
+            }
             Measure::ReleaseSpeed { object, from, to } => {
                 let o = index(object);
                 h.release(o, *from, *to).map_or(f32::NAN, |s| h.velocities[s][o].length())
@@ -460,32 +438,6 @@ impl Check {
     }
 }
 
-impl Observer for History {
-    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
-        let world = step.world;
-        let objects = world.object_count();
-        let mut poses = Vec::with_capacity(objects);
-        let mut velocities = Vec::with_capacity(objects);
-        for id in world.object_ids() {
-            let s = world.object_state(id)?;
-            poses.push((s.position, s.rotation));
-            velocities.push(s.linvel);
-        }
-        let mut contacts = vec![0u32; objects];
-        for c in world.contacts().iter().filter(|c| c.normal_force > 0.0) {
-            contacts[c.object.0 as usize] += 1;
-        }
-        let palm = |h: &crate::run::drive::HandFrame| {
-            h.sample.as_ref().map(|s| (s.pose.palm.center, s.pose.palm.rotation))
-        };
-        self.poses.push(poses);
-        self.velocities.push(velocities);
-        self.contacts.push(contacts);
-        self.palms.push(step.hands.iter().map(palm).collect());
-        Ok(())
-    }
-}
-
 /// Horizontal (x–z) distance from `p` to the polyline through `path`.
 fn distance_to_path(p: Vec3, path: &[[f32; 2]]) -> f32 {
     let q = glam::Vec2::new(p.x, p.z);
@@ -510,6 +462,7 @@ mod tests {
             poses: positions.iter().zip(rotations).map(|(p, r)| vec![(*p, *r)]).collect(),
             velocities: positions.iter().map(|_| vec![Vec3::ZERO]).collect(),
             contacts: positions.iter().map(|_| vec![0]).collect(),
+            hand_forces: positions.iter().map(|p| vec![Vec3::new(p.x, -1.0, 0.0)]).collect(),
             palms: positions.iter().map(|_| vec![Some((Vec3::ZERO, Quat::IDENTITY))]).collect(),
             gravity: Vec3::new(0.0, -9.81, 0.0),
         }
@@ -517,6 +470,23 @@ mod tests {
 
     fn check(measure: Measure, min: Option<f32>, max: Option<f32>) -> Check {
         Check { name: "c".into(), measure, min, max }
+    }
+
+    #[test]
+    fn hand_force_is_the_mean_over_the_window_along_the_axis() {
+        let h = history(
+            &[Vec3::ZERO, Vec3::new(0.1, 0.0, 0.0), Vec3::new(0.2, 0.0, 0.0)],
+            &[Quat::IDENTITY; 3],
+        );
+        let along = |axis, from| Measure::HandForce { object: "box".into(), from, to: None, axis };
+        let r = check(along(Vec3::X, 0.5), Some(0.09), Some(0.11)).evaluate(&h);
+        assert!((r.value - 0.1).abs() < 1e-6 && r.passed, "{r:?}");
+        let r = check(along(Vec3::X, 1.0), None, Some(0.1)).evaluate(&h);
+        assert!((r.value - 0.15).abs() < 1e-6 && !r.passed, "the last two steps: {r:?}");
+        let r = check(along(-Vec3::Y, 0.5), Some(1.0), None).evaluate(&h);
+        assert!((r.value - 1.0).abs() < 1e-6 && r.passed, "{r:?}");
+        let slanted = check(along(Vec3::new(1.0, 1.0, 0.0), 0.5), Some(0.0), None);
+        assert!(matches!(slanted.validate(), Err(CheckError::Axis(_))));
     }
 
     #[test]

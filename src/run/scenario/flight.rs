@@ -82,6 +82,7 @@ mod tests {
             poses: ys.iter().map(|&y| vec![(Vec3::new(0.0, y, 0.0), Quat::IDENTITY)]).collect(),
             velocities: ys.iter().map(|_| vec![Vec3::ZERO]).collect(),
             contacts: contacts.iter().map(|&c| vec![c]).collect(),
+            hand_forces: ys.iter().map(|_| vec![Vec3::ZERO]).collect(),
             palms: ys.iter().map(|_| vec![None]).collect(),
             gravity: Vec3::ZERO,
         };

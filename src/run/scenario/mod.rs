@@ -47,6 +47,7 @@
 mod builds;
 pub mod check;
 pub mod flight;
+pub mod history;
 pub mod script;
 
 use super::RunError;
@@ -72,6 +73,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
     }
     shipped![
         "push",
+        "push-steady",
         "pull",
         "grasp-lift",
         "palmar-grasp",

@@ -92,6 +92,21 @@ pub struct Key {
     /// towards the thumb, within ±30°): [`Articulation::spread_deg`].
     #[serde(default)]
     pub spread_deg: [f32; 4],
+    /// How the hand moves from the previous key to this one.
+    #[serde(default)]
+    pub ease: Ease,
+}
+
+/// How a scripted hand moves between two keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Ease {
+    /// A smoothstep: the segment starts and ends at rest.
+    #[default]
+    Smooth,
+    /// At constant speed, as for a steady push; the speed changes at once
+    /// at the keys, so a segment that starts in contact starts with a jerk.
+    Linear,
 }
 
 impl Key {
@@ -109,7 +124,8 @@ impl Key {
 }
 
 /// A scripted hand: keyframes eased with a smoothstep between each pair,
-/// so the hand starts and stops each segment at rest. Before the first key
+/// so the hand starts and stops each segment at rest, or at constant speed
+/// into a key whose `ease` is [`Ease::Linear`]. Before the first key
 /// and after the last, the hand holds still.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Script {
@@ -176,7 +192,11 @@ impl Script {
             n if n == self.keys.len() => (&self.keys[n - 1], &self.keys[n - 1], 0.0),
             n => {
                 let (a, b) = (&self.keys[n - 1], &self.keys[n]);
-                (a, b, smoothstep(a.t, b.t, t))
+                let s = match b.ease {
+                    Ease::Smooth => smoothstep(a.t, b.t, t),
+                    Ease::Linear => ((t - a.t) / (b.t - a.t)).clamp(0.0, 1.0),
+                };
+                (a, b, s)
             }
         };
         let lerp = |x: f32, y: f32| x + (y - x) * s;
@@ -223,7 +243,23 @@ mod tests {
             knuckle: None,
             opposition: 0.0,
             spread_deg: [0.0; 4],
+            ease: Ease::Smooth,
         }
+    }
+
+    #[test]
+    fn a_linear_key_is_reached_at_constant_speed() {
+        let linear = Key { ease: Ease::Linear, ..key(3.0, 0.5, 0.0) };
+        let s = Script::new(Side::Right, vec![key(1.0, 0.1, 0.0), linear]).unwrap();
+        for (t, y) in [(1.0, 0.1), (1.5, 0.2), (2.25, 0.35), (3.0, 0.5)] {
+            assert!((s.pose(t).palm.center.y - y).abs() < 1e-6, "at {t} s");
+        }
+        let key: Key =
+            serde_json::from_str(r#"{"t": 1, "palm": [0, 0, 0], "ease": "linear"}"#).unwrap();
+        assert_eq!(key.ease, Ease::Linear);
+        let bad = r#"{"t": 1, "palm": [0, 0, 0], "ease": "bouncy"}"#;
+        let err = serde_json::from_str::<Key>(bad).unwrap_err().to_string();
+        assert!(err.contains("bouncy") && err.contains("linear"), "{err}");
     }
 
     #[test]
