@@ -243,8 +243,13 @@ fn the_hand_grasps_lifts_and_drops_the_cube() {
     // verdicts allow a held object to drift in the hand (a finger's width).
     let finger = 2.0 * hand(&app).sample().pose.fingers[1][2].radius;
     assert!(lifted.y > 0.06 - finger, "the cube rose with the hand's 6 cm: {lifted}");
-    // Open the hand: the cube falls back onto the table.
-    hold(&mut app, &[KeyCode::KeyH], 1.0);
+    // Open the hand, the fingers straight and the thumb brought back from
+    // opposition: the cube falls back onto the table. (Half open, the hand
+    // may still hold it: wedged in a finger's claw, or between the opposed
+    // thumb and a finger's base.)
+    let bent = |a: &App| hand(a).curl[1..3].iter().any(|&c| c > 0.0) || hand(a).opposition > 0.0;
+    hold(&mut app, &[KeyCode::KeyT], 0.02);
+    hold_while(&mut app, &[KeyCode::KeyH], 2.0, bent);
     hold(&mut app, &[], 0.5);
     let dropped = cube(&app);
     assert!((dropped.y - CUBE_HALF).abs() < 0.005, "back on the table: {dropped}");
