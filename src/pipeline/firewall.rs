@@ -56,6 +56,14 @@ pub(super) fn object(
 ) -> Result<Admitted, WorldError> {
     let shape = desc.validate()?;
     let diameter = 2.0 * shape.compute_local_bounding_sphere().radius();
+    if let Some(inertia) = desc.inertia {
+        // The farthest reach from the centre of mass, within the bounding
+        // sphere's diameter of any of its points.
+        let com = shape.mass_properties(1.0).local_com;
+        let centre = shape.compute_local_bounding_sphere().center();
+        let reach = 0.5 * diameter + com.distance(centre);
+        crate::scene::object::check_inertia(&desc.name, inertia, desc.mass, reach)?;
+    }
     let gamma = match desc.gamma.unwrap_or(mode) {
         GammaMode::Fixed(g) => g,
         GammaMode::Auto => {

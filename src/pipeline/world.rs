@@ -12,7 +12,8 @@ use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDes
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
 use rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
+    ColliderBuilder, ColliderHandle, MassProperties, PhysicsWorld, RigidBodyBuilder,
+    RigidBodyHandle, RigidBodyType,
 };
 use std::any::Any;
 
@@ -237,10 +238,16 @@ impl InteractionWorld {
         let id = ObjectId(self.objects.len() as u32);
         let tag = near::object_tag(id);
         let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose).user_data(tag));
-        let collider = ColliderBuilder::new(shape)
-            .mass(desc.mass)
-            .friction(desc.material.surface_friction)
-            .user_data(tag);
+        let collider = match desc.inertia {
+            // The shape's centre of mass, the object's own moments.
+            Some(inertia) => {
+                let com = shape.mass_properties(1.0).local_com;
+                let props = MassProperties::new(com, desc.mass, inertia);
+                ColliderBuilder::new(shape).mass_properties(props)
+            }
+            None => ColliderBuilder::new(shape).mass(desc.mass),
+        };
+        let collider = collider.friction(desc.material.surface_friction).user_data(tag);
         let collider = self.physics.insert_collider(collider, Some(body));
         self.unindexed.push(id.0);
         self.objects.push(ObjectSlot {

@@ -53,6 +53,8 @@ struct ObjectEntry {
     rotation: Quat,
     #[serde(default)]
     gamma: Option<GammaMode>,
+    #[serde(default)]
+    inertia: Option<Vec3>,
 }
 
 fn identity() -> Quat {
@@ -161,6 +163,7 @@ impl Scene {
                     position: o.position,
                     rotation: o.rotation,
                     gamma: o.gamma,
+                    inertia: o.inertia,
                 })
             })
             .collect::<Result<Vec<_>, SceneError>>()?;
@@ -224,6 +227,19 @@ mod tests {
         .unwrap();
         assert_eq!(scene.objects[0].material.skin.static_mu, 0.9);
         assert_eq!(scene.objects[0].rotation, Quat::IDENTITY);
+        assert_eq!(scene.objects[0].inertia, None, "uniform density unless given");
+    }
+
+    #[test]
+    fn reads_an_object_s_own_inertia() {
+        let scene = Scene::parse(
+            "s.json",
+            r#"{"objects": [{"name": "shell", "shape": {"Sphere": {"radius": 0.03}},
+                 "mass": 0.06, "material": "rubber", "position": [0.0, 0.2, 0.0],
+                 "inertia": [3.6e-5, 3.6e-5, 3.6e-5]}]}"#,
+        )
+        .unwrap();
+        assert_eq!(scene.objects[0].inertia, Some(Vec3::splat(3.6e-5)));
     }
 
     #[test]

@@ -233,6 +233,12 @@ pub struct ObjectDesc {
     pub rotation: Quat,
     /// Overrides the world's γ mode for this object.
     pub gamma: Option<GammaMode>,
+    /// Its principal moments of inertia about its centre of mass, along
+    /// its own axes (kg·m²), where its mass is not spread evenly through
+    /// its shape: a hollow ball's `2/3·m·r²` each, say. `None`: the
+    /// shape's own at this mass, of uniform density.
+    #[serde(default)]
+    pub inertia: Option<Vec3>,
 }
 
 impl ObjectDesc {
@@ -246,12 +252,20 @@ impl ObjectDesc {
             position,
             rotation: Quat::IDENTITY,
             gamma: None,
+            inertia: None,
         }
     }
 
     /// The same object with another material.
     pub fn with_material(mut self, material: Material) -> ObjectDesc {
         self.material = material;
+        self
+    }
+
+    /// The same object with its own principal moments of inertia
+    /// (kg·m², [`Self::inertia`]).
+    pub fn with_inertia(mut self, inertia: Vec3) -> ObjectDesc {
+        self.inertia = Some(inertia);
         self
     }
 
@@ -445,4 +459,34 @@ impl StaticDesc {
         }
         self.shape.build(name, "shape")
     }
+}
+
+/// Checks an object's own principal moments of inertia `i` (kg·m²) against
+/// its `mass` (kg) and its bounding radius `reach` (m), the farthest any
+/// of its mass can be from its centre: each moment finite and positive,
+/// none more than the other two together (every real body's, since
+/// `I_x + I_y − I_z = 2∫z²dm ≥ 0`), and none above `m·reach²`.
+pub(crate) fn check_inertia(
+    object: &str,
+    i: Vec3,
+    mass: f32,
+    reach: f32,
+) -> Result<(), ObjectError> {
+    if !(i.is_finite() && i.min_element() > 0.0) {
+        let why = format!("each principal moment must be a positive finite number, got {i:?}");
+        return Err(ObjectError::new(object, "inertia", why));
+    }
+    if (0..3).any(|k| i[k] > i[(k + 1) % 3] + i[(k + 2) % 3]) {
+        let why =
+            format!("no body has these moments: one exceeds the other two together, got {i:?}");
+        return Err(ObjectError::new(object, "inertia", why));
+    }
+    let most = mass * reach * reach;
+    if i.max_element() > most {
+        let why = format!(
+            "at most m·r² = {most} kg·m², all its mass at its shape's farthest reach, got {i:?}"
+        );
+        return Err(ObjectError::new(object, "inertia", why));
+    }
+    Ok(())
 }

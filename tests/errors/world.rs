@@ -159,6 +159,26 @@ fn object_errors_name_the_object_the_field_and_the_value() {
 }
 
 #[test]
+fn an_object_s_own_inertia_must_be_a_real_body_s() {
+    // The 5 cm, 100 g crate: its corners 4.3 cm from its centre, so no
+    // moment can exceed 0.1 · 0.0433² = 1.875e-4 kg·m².
+    let e = object_error(|d| d.inertia = Some(Vec3::new(4.0e-5, f32::NAN, 4.0e-5)));
+    names(e, &["object 'crate': inertia: ", "positive finite", "NaN"]);
+    let e = object_error(|d| d.inertia = Some(Vec3::new(4.0e-5, 0.0, 4.0e-5)));
+    names(e, &["object 'crate': inertia: ", "positive finite"]);
+    let e = object_error(|d| d.inertia = Some(Vec3::new(1.0e-5, 1.0e-5, 3.0e-5)));
+    names(e, &["object 'crate': inertia: ", "exceeds the other two together"]);
+    let e = object_error(|d| d.inertia = Some(Vec3::splat(2.0e-4)));
+    names(e, &["object 'crate': inertia: ", "at most m·r² = 0.0001875"]);
+    // A crate with its mass in its walls: more than a solid one's 4.2e-5.
+    let mut world = world();
+    let id = world.add_object(&cube().with_inertia(Vec3::splat(6.0e-5))).unwrap();
+    let body = world.object_body(id).unwrap();
+    let own = world.physics().bodies[body].mass_properties().local_mprops.principal_inertia();
+    assert!((own - Vec3::splat(6.0e-5)).abs().max_element() < 1.0e-9, "{own}");
+}
+
+#[test]
 fn the_automatic_gamma_needs_gravity() {
     let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
     let mut world = InteractionWorld::new(config).unwrap();

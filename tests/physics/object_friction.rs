@@ -117,3 +117,58 @@ fn rapier_s_cone_per_point_falls_short_of_coulomb_at_a_cube_s_corners() {
     let slid = stopping_distance(&mut world, id, v) / (v * v / (2.0 * mu * G));
     assert!((slid * predicted - 1.0).abs() < 0.01, "slid {slid} × v²/2μg");
 }
+
+/// The acceleration (m/s²) down a ramp tilted `slope` (rad), with combined
+/// friction 0.55, of a 3 cm, 80 g ball with principal moments `inertia`
+/// (kg·m², `None` for a solid ball's), measured from 0.1 s to 0.5 s after
+/// it is let go, and its rolling ratio ω·r/v at the end.
+fn down_a_ramp(slope: f32, inertia: Option<Vec3>) -> (f32, f32) {
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    let tilt = Quat::from_rotation_z(slope);
+    let half = Vec3::new(1.0, 0.05, 0.3);
+    let ramp = StaticDesc {
+        name: "ramp".into(),
+        shape: coulomb_hands::ShapeDesc::Box { half_extents: half },
+        position: Vec3::ZERO,
+        rotation: tilt,
+        friction: 0.5,
+    };
+    world.add_static(&ramp).unwrap();
+    let (r, mass) = (0.015, 0.08);
+    let up = tilt * Vec3::Y;
+    let mut desc = ObjectDesc {
+        shape: coulomb_hands::ShapeDesc::Sphere { radius: r },
+        ..ObjectDesc::cuboid("ball", Vec3::ZERO, mass, up * (half.y + r) + tilt * Vec3::X * 0.5)
+    }
+    .with_material(Material { surface_friction: 0.6, ..Material::wood() });
+    desc.inertia = inertia;
+    let id = world.add_object(&desc).unwrap();
+    let down = tilt * -Vec3::X;
+    let speed = |world: &mut InteractionWorld, steps: usize| {
+        for _ in 0..steps {
+            world.step();
+        }
+        world.object_state(id).unwrap()
+    };
+    let v0 = speed(&mut world, 100).linvel.dot(down);
+    let end = speed(&mut world, 400);
+    let v1 = end.linvel.dot(down);
+    let spin = end.angvel.dot(up.cross(down)) * r;
+    ((v1 - v0) / 0.4, spin / v1)
+}
+
+#[test]
+fn a_hollow_ball_rolls_down_a_ramp_at_three_fifths_of_g_sin_theta() {
+    // Rolling without slipping: a = g·sinθ / (1 + I/(m r²)): 5/7 for a
+    // solid ball (I = 2/5 m r²), 3/5 for a hollow one (I = 2/3 m r²), as
+    // long as μ > tanθ / (1 + m r²/I): 0.29 and 0.40 of tan 20° here.
+    let slope = 20f32.to_radians();
+    let g_sin = G * slope.sin();
+    let (r, mass) = (0.015f32, 0.08f32);
+    let hollow = Vec3::splat(2.0 / 3.0 * mass * r * r);
+    for (inertia, fraction) in [(None, 5.0 / 7.0), (Some(hollow), 3.0 / 5.0)] {
+        let (a, rolling) = down_a_ramp(slope, inertia);
+        assert!((a / (fraction * g_sin) - 1.0).abs() < 0.02, "{inertia:?}: a = {a} m/s²");
+        assert!((rolling - 1.0).abs() < 0.02, "{inertia:?}: ω·r/v = {rolling}");
+    }
+}
