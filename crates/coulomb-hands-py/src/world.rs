@@ -65,6 +65,12 @@ fn rotation(value: Option<&Bound<'_, PyAny>>) -> PyResult<Quat> {
     value.map_or(Ok(Quat::IDENTITY), |q| arrays::quat(q, "rotation"))
 }
 
+/// An object's own principal moments of inertia (kg·m²), if given; the
+/// world checks them ([`ObjectDesc::inertia`]).
+fn inertia(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec3>> {
+    value.map(|i| arrays::vec3(i, "inertia")).transpose()
+}
+
 impl World {
     fn add(
         &mut self,
@@ -160,6 +166,7 @@ impl World {
         rotation = None,
         material = "wood",
         gamma = None,
+        inertia = None,
     ))]
     #[allow(clippy::too_many_arguments)]
     fn add_box(
@@ -171,17 +178,22 @@ impl World {
         rotation: Option<&Bound<'_, PyAny>>,
         material: &str,
         gamma: Option<&Bound<'_, PyAny>>,
+        inertia: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<u32> {
         let size = arrays::vec3(size, "size")?;
         let desc = ObjectDesc {
             rotation: self::rotation(rotation)?,
+            inertia: self::inertia(inertia)?,
             ..ObjectDesc::cuboid(name, size, mass, arrays::vec3(position, "position")?)
         };
         self.add(desc, material, self::gamma(gamma)?)
     }
 
     /// A sphere of `radius` (m) and `mass` (kg); returns its id.
-    #[pyo3(signature = (name, radius, mass, position, material = "wood", gamma = None))]
+    #[pyo3(signature = (
+        name, radius, mass, position, material = "wood", gamma = None, inertia = None
+    ))]
+    #[allow(clippy::too_many_arguments)]
     fn add_sphere(
         &mut self,
         name: &str,
@@ -190,10 +202,12 @@ impl World {
         position: &Bound<'_, PyAny>,
         material: &str,
         gamma: Option<&Bound<'_, PyAny>>,
+        inertia: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<u32> {
         let at = arrays::vec3(position, "position")?;
         let desc = ObjectDesc {
             shape: ShapeDesc::Sphere { radius },
+            inertia: self::inertia(inertia)?,
             ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at)
         };
         self.add(desc, material, self::gamma(gamma)?)

@@ -41,6 +41,9 @@ def test_nan_is_named_where_it_is() -> None:
     pose["capsule_b"][7, 0] = np.inf
     raises(ch.PoseError, lambda: world.set_hand_pose(hand, pose), "middle")
     raises(ch.ObjectError, lambda: world.add_box("crate", [0.1, np.nan, 0.1], 1.0, [0, 1, 0]), "crate", "half_extents")
+    odd = [1e-4, 1e-4, 3e-4]  # no body has a moment above the other two together
+    raises(ch.ObjectError, lambda: world.add_sphere("ball", 0.05, 0.2, [0, 1, 0], inertia=odd), "ball", "inertia")
+    raises(ch.ShapeError, lambda: world.add_box("b", [0.1] * 3, 1.0, [0, 1, 0], inertia=[1e-4] * 2), "inertia", "(3,)")
     raises(ch.ConfigError, lambda: ch.Config(contact_offset=float("nan")), "contact_offset")
     config = ch.Config()
     raises(ch.ConfigError, lambda: setattr(config, "dt", -0.001), "dt")

@@ -5,7 +5,11 @@ does."""
 
 from __future__ import annotations
 
+import json
+import math
 import threading
+from pathlib import Path
+from typing import Optional
 
 import numpy as np
 import coulomb_hands as ch
@@ -134,3 +138,37 @@ def test_two_worlds_on_two_threads_step_as_one_after_the_other() -> None:
     states = sequential[0].object_states()
     assert abs(states["position"][1, 1] - 0.019) < 0.002
     assert states["position"][0, 1] > 0.3
+
+
+def ramp_world(tmp_path: Path, inertia: Optional[list[float]]) -> ch.World:
+    """A 3 cm, 80 g ball let go on a rapier ramp tilted 20° about z (down
+    the slope is −x), with combined friction 0.55."""
+    scene = tmp_path / "ramp.json"
+    tilt = math.radians(20.0)
+    q = [0.0, 0.0, math.sin(tilt / 2), math.cos(tilt / 2)]
+    scene.write_text(json.dumps({"statics": [{
+        "name": "ramp", "shape": {"Box": {"half_extents": [1.0, 0.05, 0.3]}},
+        "position": [0.0, 0.0, 0.0], "rotation": q, "friction": 0.5}]}))
+    world = ch.World()
+    world.add_scene(scene)
+    up = np.array([-math.sin(tilt), math.cos(tilt), 0.0])
+    along = np.array([math.cos(tilt), math.sin(tilt), 0.0])
+    world.add_sphere("ball", 0.015, 0.08, up * 0.065 + along * 0.5, material="rubber",
+                     inertia=inertia)
+    return world
+
+
+def test_a_hollow_ball_rolls_down_a_ramp_slower_than_a_solid_one(tmp_path: Path) -> None:
+    # Rolling without slipping: a = g sinθ / (1 + I/(m r²)), 5/7 of it
+    # for a solid ball and 3/5 for a hollow one (I = 2/3 m r²).
+    g_sin = 9.81 * math.sin(math.radians(20.0))
+    hollow = [2.0 / 3.0 * 0.08 * 0.015**2] * 3
+    down = np.array([-math.cos(math.radians(20.0)), -math.sin(math.radians(20.0)), 0.0])
+    for inertia, fraction in ((None, 5.0 / 7.0), (hollow, 3.0 / 5.0)):
+        world = ramp_world(tmp_path, inertia)
+        world.step(100)
+        v0 = float(world.object_states()["linvel"][0] @ down)
+        world.step(400)
+        v1 = float(world.object_states()["linvel"][0] @ down)
+        a = (v1 - v0) / 0.4
+        assert abs(a / (fraction * g_sin) - 1.0) < 0.02, (inertia, a)

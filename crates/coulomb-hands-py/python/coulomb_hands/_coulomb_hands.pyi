@@ -171,10 +171,13 @@ class World:
         rotation: Optional[ArrayLike] = None,
         material: str = "wood",
         gamma: Optional[Gamma] = None,
+        inertia: Optional[ArrayLike] = None,
     ) -> int:
         """A box of full `size` (3,) and `mass` at `position` (3,), turned by
         `rotation` (4,) x, y, z, w, of a material of the library's table, with its own
-        contact stiffness `gamma` (N/m, or "auto") if given; returns its id."""
+        contact stiffness `gamma` (N/m, or "auto") if given, and its own principal
+        moments of inertia `inertia` (3,) about its centre, along its axes (kg·m²), if
+        its mass is not spread evenly; returns its id."""
     def add_sphere(
         self,
         name: str,
@@ -183,8 +186,11 @@ class World:
         position: ArrayLike,
         material: str = "wood",
         gamma: Optional[Gamma] = None,
+        inertia: Optional[ArrayLike] = None,
     ) -> int:
-        """A sphere of `radius` and `mass` centred at `position` (3,); returns its id."""
+        """A sphere of `radius` and `mass` centred at `position` (3,), with its own
+        principal moments of inertia `inertia` (3,) if not solid (a hollow ball's
+        2/3·m·r² each); returns its id."""
     def add_mesh(
         self,
         name: str,
