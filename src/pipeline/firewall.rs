@@ -25,6 +25,7 @@ use crate::hand::HandPose;
 use crate::scene::{GammaMode, ObjectDesc, ObjectError, StaticDesc};
 use glam::Vec3;
 use rapier3d::parry::shape::SharedShape;
+use rapier3d::prelude::MassProperties;
 use wide::f32x4;
 
 /// The config, before a world is made from it.
@@ -44,6 +45,10 @@ pub(super) struct Admitted {
     pub gamma: f32,
     /// Its bounding sphere's diameter (m).
     pub diameter: f32,
+    /// Its own mass properties, where it gives its own inertia
+    /// ([`ObjectDesc::inertia`]): its shape's centre of mass, its mass
+    /// and those moments. `None`: the shape's own at its mass.
+    pub mass_properties: Option<MassProperties>,
 }
 
 /// An object's description, and the γ it gets under `mode`
@@ -55,15 +60,18 @@ pub(super) fn object(
     gravity: f32,
 ) -> Result<Admitted, WorldError> {
     let shape = desc.validate()?;
-    let diameter = 2.0 * shape.compute_local_bounding_sphere().radius();
-    if let Some(inertia) = desc.inertia {
-        // The farthest reach from the centre of mass, within the bounding
-        // sphere's diameter of any of its points.
-        let com = shape.mass_properties(1.0).local_com;
-        let centre = shape.compute_local_bounding_sphere().center();
-        let reach = 0.5 * diameter + com.distance(centre);
-        crate::scene::object::check_inertia(&desc.name, inertia, desc.mass, reach)?;
-    }
+    let bounds = shape.compute_local_bounding_sphere();
+    let diameter = 2.0 * bounds.radius();
+    let mass_properties = match desc.inertia {
+        Some(inertia) => {
+            // The farthest any of its mass can be from its centre of mass.
+            let com = shape.mass_properties(1.0).local_com;
+            let reach = bounds.radius() + com.distance(bounds.center());
+            crate::scene::object::check_inertia(&desc.name, inertia, desc.mass, reach)?;
+            Some(MassProperties::new(com, desc.mass, inertia))
+        }
+        None => None,
+    };
     let gamma = match desc.gamma.unwrap_or(mode) {
         GammaMode::Fixed(g) => g,
         GammaMode::Auto => {
@@ -75,7 +83,7 @@ pub(super) fn object(
         let why = format!("automatic γ is {gamma}: needs gravity, μ_st and size > 0");
         return Err(ObjectError::new(&desc.name, "gamma", why).into());
     }
-    Ok(Admitted { shape, gamma, diameter })
+    Ok(Admitted { shape, gamma, diameter, mass_properties })
 }
 
 /// A hand pose for hand number `hand`.

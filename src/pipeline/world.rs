@@ -12,8 +12,7 @@ use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDes
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
 use rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, MassProperties, PhysicsWorld, RigidBodyBuilder,
-    RigidBodyHandle, RigidBodyType,
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
 };
 use std::any::Any;
 
@@ -232,19 +231,14 @@ impl InteractionWorld {
 
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
-        let firewall::Admitted { shape, gamma, diameter } =
+        let firewall::Admitted { shape, gamma, diameter, mass_properties } =
             firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
         let pose = Pose::from_parts(desc.position, desc.rotation);
         let id = ObjectId(self.objects.len() as u32);
         let tag = near::object_tag(id);
         let body = self.physics.insert_body(RigidBodyBuilder::dynamic().pose(pose).user_data(tag));
-        let collider = match desc.inertia {
-            // The shape's centre of mass, the object's own moments.
-            Some(inertia) => {
-                let com = shape.mass_properties(1.0).local_com;
-                let props = MassProperties::new(com, desc.mass, inertia);
-                ColliderBuilder::new(shape).mass_properties(props)
-            }
+        let collider = match mass_properties {
+            Some(props) => ColliderBuilder::new(shape).mass_properties(props),
             None => ColliderBuilder::new(shape).mass(desc.mass),
         };
         let collider = collider.friction(desc.material.surface_friction).user_data(tag);

@@ -7,9 +7,14 @@ use crate::run::RunError;
 use crate::run::drive::HandSource;
 use glam::{EulerRot, Quat, Vec3};
 
+/// Linear 0→1 ramp of `t` over `[t0, t1]`.
+pub fn ramp(t0: f32, t1: f32, t: f32) -> f32 {
+    ((t - t0) / (t1 - t0)).clamp(0.0, 1.0)
+}
+
 /// Smooth 0→1 ramp of `t` over `[t0, t1]` (zero slope at both ends).
 pub fn smoothstep(t0: f32, t1: f32, t: f32) -> f32 {
-    let x = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
+    let x = ramp(t0, t1, t);
     x * x * (3.0 - 2.0 * x)
 }
 
@@ -194,7 +199,7 @@ impl Script {
                 let (a, b) = (&self.keys[n - 1], &self.keys[n]);
                 let s = match b.ease {
                     Ease::Smooth => smoothstep(a.t, b.t, t),
-                    Ease::Linear => ((t - a.t) / (b.t - a.t)).clamp(0.0, 1.0),
+                    Ease::Linear => ramp(a.t, b.t, t),
                 };
                 (a, b, s)
             }
