@@ -1,6 +1,7 @@
-//! The demo's release, explained: where its cube lands, from where it was
-//! when the hand began to open, with the grip as it is, with the grip as
-//! it was (one γ per contact, ζ 0.5), and on a rigid thumb: a kinematic
+//! The demo's release, explained: where its cube comes to rest, from where
+//! it was when the hand began to open, with the grip as it is, with the
+//! pads' rings alone (no line contacts), with the grip as it was (one γ
+//! per contact, ζ 0.5, rings), and on a rigid thumb: a kinematic
 //! rapier body of the scripted thumb's two pad bones' capsules, moved as
 //! they are, carrying the cube from the instant the last finger let go,
 //! with rapier's rigid contact and the skin's friction on wood. What the
@@ -17,10 +18,14 @@ use coulomb_hands::{
 use glam::Vec3;
 use rapier3d::prelude::{CoefficientCombineRule, ColliderBuilder, Pose, RigidBodyBuilder};
 
+/// Where the cube came to rest (x, m), and whether on the ground (it
+/// landed) or on the thumb.
+type Rest = (f32, bool);
+
 /// The demo under `config`: the cube's x when the hand starts to open,
-/// its x where it lands, and its state when the last finger stopped
+/// where it came to rest, and its state when the last finger stopped
 /// pressing (s, state).
-fn demo(config: InteractionConfig) -> (f32, f32, (f64, ObjectState)) {
+fn demo(config: InteractionConfig) -> (f32, Rest, (f64, ObjectState)) {
     let demo = GraspLiftCarry::new(config).expect("the demo's world");
     let (cube, hand, half) = (demo.cube, demo.hand, demo.half);
     let script = move |t: f64| Some(demo_pose(half, t as f32));
@@ -45,7 +50,11 @@ fn demo(config: InteractionConfig) -> (f32, f32, (f64, ObjectState)) {
     driver.drive(hand, PoseFn::new(Side::Right, script)).expect("the demo's hand");
     let steps = (GraspLiftCarry::END / config.dt).round() as usize;
     driver.run(steps, &mut [&mut watch]).expect("the demo runs");
-    (at_open.unwrap(), landed.unwrap_or(f32::NAN), let_go.unwrap())
+    let rest = match landed {
+        Some(x) => (x, true),
+        None => (world.object_state(cube).expect("the cube").position.x, false),
+    };
+    (at_open.unwrap(), rest, let_go.unwrap())
 }
 
 fn demo_pose(half: f32, t: f32) -> HandPose {
@@ -57,13 +66,8 @@ fn demo_pose(half: f32, t: f32) -> HandPose {
 
 /// The cube, in the state it had when the last finger let go, dropped by a
 /// rigid thumb that moves as the scripted one, in a world of the same
-/// config with no hand: where it lands (x), or `None` if it is still on
-/// the thumb 2 s later.
-fn rigid_thumb(
-    config: InteractionConfig,
-    half: f32,
-    (t0, cube): (f64, ObjectState),
-) -> Option<f32> {
+/// config with no hand: where it comes to rest within 2 s.
+fn rigid_thumb(config: InteractionConfig, half: f32, (t0, cube): (f64, ObjectState)) -> Rest {
     let mut world = InteractionWorld::new(config).expect("a world");
     world.add_static(&StaticDesc::ground(-half, 0.5)).expect("the ground");
     let desc = ObjectDesc {
@@ -94,24 +98,27 @@ fn rigid_thumb(
         world.step();
         let p = world.object_state(id).expect("the cube").position;
         if p.y < -half + 0.03 {
-            return Some(p.x);
+            return (p.x, true);
         }
     }
-    None
+    (world.object_state(id).expect("the cube").position.x, false)
 }
 
 fn main() {
     let now = InteractionConfig::default();
-    let before = InteractionConfig { virtual_fingers: false, damping_ratio: Some(0.5), ..now };
-    let (open, landed, let_go) = demo(now);
-    let (open_before, landed_before, _) = demo(before);
-    let mm = |x: f32| format!("{:5.1} mm to the side", x * 1e3);
-    println!("The demo's cube lands, from where it was when the hand began to open:");
-    println!("  with the grip as it is:                  {}", mm(landed - open));
-    println!("  with one γ per contact and ζ 0.5:         {}", mm(landed_before - open_before));
-    let rigid = match rigid_thumb(now, 0.025, let_go) {
-        Some(x) => mm(x - open),
-        None => "no: it stays on the thumb".to_string(),
+    let rings = InteractionConfig { line_contacts: false, ..now };
+    let before = InteractionConfig { virtual_fingers: false, damping_ratio: Some(0.5), ..rings };
+    let said = |open: f32, (x, landed): Rest| {
+        let side = format!("{:5.1} mm to the side", (x - open) * 1e3);
+        if landed { format!("lands {side}") } else { format!("stays on the thumb, {side}") }
     };
+    println!("The demo's cube comes to rest, from where it was when the hand began to open:");
+    let (open, rest, let_go) = demo(now);
+    println!("  with the grip as it is:                     {}", said(open, rest));
+    let (open_rings, rest_rings, _) = demo(rings);
+    println!("  with the pads' rings alone:                 {}", said(open_rings, rest_rings));
+    let (open_before, rest_before, _) = demo(before);
+    println!("  with rings, one γ per contact and ζ 0.5:    {}", said(open_before, rest_before));
+    let rigid = said(open, rigid_thumb(now, 0.025, let_go));
     println!("  on a rigid thumb, from {:.3} s (last finger): {rigid}", let_go.0);
 }

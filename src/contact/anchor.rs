@@ -4,7 +4,7 @@
 //! (§3.5.3).
 
 use super::surface::{self, SurfacePoint};
-use super::{BoneMotion, ObjectView, patch};
+use super::{BoneMotion, LawSettings, ObjectView, line, patch};
 use crate::friction::FrictionCoefficients;
 use crate::hand::{Bone, BoneShape, Palm, SkinClass};
 use glam::{Mat3, Quat, Vec3};
@@ -19,10 +19,11 @@ pub(crate) struct Anchor {
     /// Per sample: its point in the object frame and its skin offset from p
     /// in the bone frame.
     pub samples: patch::Samples,
-    /// The patch's radius on the object (m).
+    /// The patch's radius on the object (m); a line's, half its length.
     pub radius: f32,
     /// Whether the patch holds the object as a rigid support: a planar
-    /// face of the object on the interior of a palm face.
+    /// face of the object on the interior of a palm face, or along a
+    /// finger bone that lies on it (a line contact).
     pub rigid: bool,
     /// The penetration depth the force saw last step (m), for the
     /// penetration-speed limit.
@@ -238,35 +239,53 @@ impl Anchor {
         bone: Bone,
         motion: &BoneMotion,
         object: &ObjectView,
-        patch: &patch::PatchConfig,
+        settings: &LawSettings,
     ) -> Anchor {
+        let patch = &settings.patch;
         let site = site_under_bone(&motion.now(), object, near);
-        let (c, n) = (site.point, site.normal);
-        let bone_anchor = BoneAnchor::at(&motion.now(), motion.palm_now(), c, n);
+        let (mut c, n) = (site.point, site.normal);
         // A finger's pad is soft and round: pressed near an edge, it wraps
-        // round it. The palm's wide flat ring must fit the face it is on.
-        let (radius, planar) = match bone.skin_class() {
-            SkinClass::Finger => (patch.finger_radius, false),
-            SkinClass::Thumb => (patch.thumb_radius, false),
-            SkinClass::Palm => {
-                let room = bone_anchor.room_on_face(motion.palm_now(), patch.palm_radius);
-                patch::fit_to_face(object, c, n, patch.samples, room)
+        // round it. Laid along a flat face, it touches it along a line,
+        // which holds the object as a flat support does, and the contact
+        // sits at the line's middle, so that its patch is centred on C. The
+        // palm's wide flat ring must fit the face it is on.
+        let pad = match bone.skin_class() {
+            SkinClass::Finger => patch.finger_radius,
+            SkinClass::Thumb => patch.thumb_radius,
+            SkinClass::Palm => patch.palm_radius,
+        };
+        let line = match (motion.now(), settings.line_band) {
+            (BoneShape::Capsule(cap), Some(band)) => {
+                line::along_face(&cap, object, c, n, band, pad)
             }
+            _ => None,
+        };
+        if let Some(line) = &line {
+            c = surface::project_to_surface(object.shape, &object.pose, line.middle);
+        }
+        let bone_anchor = BoneAnchor::at(&motion.now(), motion.palm_now(), c, n);
+        let (radius, rigid, offsets) = match (line, bone.skin_class()) {
+            (Some(line), _) => (line.half, true, line::sample_offsets(n, &line, patch.samples)),
+            (None, SkinClass::Palm) => {
+                let room = bone_anchor.room_on_face(motion.palm_now(), pad);
+                let (radius, planar) = patch::fit_to_face(object, c, n, patch.samples, room);
+                let rigid = planar && bone_anchor.is_flat();
+                (radius, rigid, patch::sample_offsets(n, patch.samples, radius))
+            }
+            (None, _) => (pad, false, patch::sample_offsets(n, patch.samples, pad)),
         };
         let rot_inv = bone_anchor.rotation(motion.now(), motion.palm_now()).inverse();
-        let samples = patch::Samples::from_pairs(
-            patch::sample_offsets(n, patch.samples, radius).into_iter().map(|o| {
-                let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
-                (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
-            }),
-        );
+        let samples = patch::Samples::from_pairs(offsets.into_iter().map(|o| {
+            let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
+            (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
+        }));
         Anchor {
             c_local: object.pose.inverse_transform_point(c),
             n_local: object.pose.rotation.inverse() * n,
             bone: bone_anchor,
             samples,
             radius,
-            rigid: planar && bone_anchor.is_flat(),
+            rigid,
             limited_depth: 0.0,
             skin: None,
         }

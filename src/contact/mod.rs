@@ -36,6 +36,7 @@ pub(crate) mod detect;
 mod deviation;
 pub mod event;
 pub(crate) mod lanes;
+mod line;
 pub mod patch;
 pub mod surface;
 #[cfg(target_arch = "x86_64")]
@@ -177,6 +178,9 @@ pub(crate) struct LawSettings {
     pub deviation_springs: bool,
     /// A slipping contact re-centres under the bone before C moves.
     pub recentre: bool,
+    /// How near a face (m) a bone lying along it touches it, for line
+    /// contacts (`line.rs`): the contact offset; `None` without them.
+    pub line_band: Option<f32>,
 }
 
 /// How a contact presses this step, before any force: where its anchors
@@ -229,7 +233,7 @@ impl Contact {
             stiffness: object.gamma,
             state: FrictionState::Separated,
             samples: Vec::new(),
-            anchor: Anchor::new(near, bone, motion, object, &settings.patch),
+            anchor: Anchor::new(near, bone, motion, object, settings),
         }
     }
 
@@ -319,7 +323,7 @@ impl Contact {
                 // current closest features so the next press starts fresh.
                 let Some(prox) = touching() else { return false };
                 let near = SurfacePoint { point: prox.object_point, normal: prox.object_normal };
-                self.anchor = Anchor::new(near, self.bone, motion, object, &settings.patch);
+                self.anchor = Anchor::new(near, self.bone, motion, object, settings);
                 self.point = prox.object_point;
                 self.normal = prox.object_normal;
                 self.samples.clear();

@@ -97,7 +97,7 @@ pub(crate) fn fit_to_face(
 }
 
 /// The least cosine between sample normals for a face to count as planar.
-const PLANAR_COS: f32 = 0.999;
+pub(crate) const PLANAR_COS: f32 = 0.999;
 
 /// The per-sample forces on the object.
 ///

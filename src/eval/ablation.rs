@@ -15,7 +15,7 @@ pub type Departure = (&'static str, fn(&mut InteractionConfig, &InteractionConfi
 
 /// Every departure of [`Method::Coulomb`] from [`Method::Thesis`]; each
 /// takes its value from the default config, the one home of the values.
-pub const DEPARTURES: [Departure; 10] = [
+pub const DEPARTURES: [Departure; 11] = [
     ("Coulomb's kinetic friction", |c, _| c.kinetic = KineticFriction::Coulomb),
     ("contact damper", |c, d| c.damping_ratio = d.damping_ratio),
     ("force cap", |c, d| c.force_cap = d.force_cap),
@@ -25,6 +25,7 @@ pub const DEPARTURES: [Departure; 10] = [
     ("virtual fingers", |c, d| c.virtual_fingers = d.virtual_fingers),
     ("patch deviation springs", |c, d| c.deviation_springs = d.deviation_springs),
     ("slip re-centring", |c, d| c.slip_recentre = d.slip_recentre),
+    ("line contacts", |c, d| c.line_contacts = d.line_contacts),
     ("tracking filter", |c, d| c.tracking = d.tracking),
 ];
 

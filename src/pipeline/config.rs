@@ -125,6 +125,11 @@ pub struct InteractionConfig {
     /// A slipping contact re-centres under the bone before its C moves
     /// (default); off, C moves from where it is, as in the thesis.
     pub slip_recentre: bool,
+    /// A finger bone lying along a flat face touches it along a line
+    /// (default): its patch is stretched along the bone and holds the
+    /// object upright as a small flat support does (`contact/line.rs`).
+    /// Off, every finger patch is the pad's ring, as in the thesis.
+    pub line_contacts: bool,
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.
     pub stability_limit: bool,
@@ -186,6 +191,7 @@ impl Default for InteractionConfig {
             engine_substeps: ENGINE_SUBSTEPS,
             deviation_springs: true,
             slip_recentre: true,
+            line_contacts: true,
             stability_limit: true,
             virtual_fingers: true,
             grab: None,

@@ -45,7 +45,8 @@ impl Method {
     /// (no damper, force cap or penetration-speed limit), one contact
     /// offset, no stability limit, the patch's samples carrying `f/N` each
     /// (no deviation springs), slipping C moved from where it is rather
-    /// than re-centred under the bone, and the tracked hand acting as it is
+    /// than re-centred under the bone, every finger patch the pad's ring (no
+    /// line contacts), and the tracked hand acting as it is
     /// tracked, jitter and all. One difference remains: `p`
     /// is the bone's surface point, not the phalanx centroid (see
     /// `contact/mod.rs`, "Which bone point is p"): with the centroid, the
@@ -65,6 +66,7 @@ impl Method {
                 virtual_fingers: false,
                 deviation_springs: false,
                 slip_recentre: false,
+                line_contacts: false,
                 tracking: None,
                 ..base
             },

@@ -6,7 +6,7 @@ use super::drive::{Driver, PoseFn, StepView};
 use super::scenario::script::smoothstep;
 use crate::contact::ContactEventKind;
 use crate::friction::FrictionState;
-use crate::hand::{HandId, HandPose, Palm, Side};
+use crate::hand::{Bone, Finger, HandId, HandPose, Palm, Side};
 use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
 use crate::scene::{ObjectDesc, ObjectId, StaticDesc};
 use glam::{Quat, Vec3};
@@ -66,6 +66,10 @@ pub struct GraspReport {
     pub contacts_held: usize,
     /// Hand contacts at the end of the run, after release.
     pub contacts_after_release: usize,
+    /// Of those, the ones of fingers other than the thumb that still
+    /// press: none once the hand has let go. The thumb, which the turn
+    /// put under the cube, may still carry it, as a real one would.
+    pub fingers_after_release: usize,
     /// Maximum cube speed over the run (m/s).
     pub max_speed: f32,
     /// The printed rows, one per row interval.
@@ -156,7 +160,7 @@ impl GraspLiftCarry {
             t if t < Self::TURN.1 => "turn",
             t if t < Self::OPEN.0 => "hold",
             t if t < Self::OPEN.1 => "open",
-            _ => "fall",
+            _ => "opened",
         }
     }
 
@@ -201,6 +205,13 @@ impl GraspLiftCarry {
             final_height: s.position.y,
             contacts_held: watch.contacts_held,
             contacts_after_release: self.world.contacts().len(),
+            fingers_after_release: self
+                .world
+                .contacts()
+                .iter()
+                .filter(|c| c.normal_force > 0.0)
+                .filter(|c| !matches!(c.bone, Bone::Finger(Finger::Thumb, _)))
+                .count(),
             max_speed: watch.max_speed,
             timeline: watch.timeline,
         })

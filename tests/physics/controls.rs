@@ -153,6 +153,18 @@ fn flat_hand_lift_on_a_palm_tilted_past_the_friction_angle_loses_the_figurine() 
 }
 
 #[test]
+fn a_plate_carried_on_a_hand_tipped_past_the_friction_angle_slides_off() {
+    // Tipped 12°, the plate's weight along the hand, m g sin 12°, is 0.21 of
+    // the normal force, within skin on wood's μ_st 0.46. Tipped 35°, it is
+    // tan 35° = 0.70 of it: no friction holds it, and it slides off the
+    // fingertips, lying anywhere but tipped as the hand is.
+    let steep = variant("plate-carry", "[12, 0, 0]", "[35, 0, 0]");
+    assert!(!check(&steep, "moved on the hand").passed, "{}", table(&steep));
+    assert!(!check(&steep, "tipped with the hand").passed, "{}", table(&steep));
+    assert!(check(&steep, "lifted").passed, "{}", table(&steep));
+}
+
+#[test]
 fn a_steady_push_on_grippier_ground_needs_more_than_the_scenario_s_mu_m_g() {
     // The push reads the ground's friction. Ground friction 0.6 instead of
     // 0.2 makes the combined μ 0.55, not 0.35: the same steady push needs

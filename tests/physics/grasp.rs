@@ -4,7 +4,7 @@ use coulomb_hands::InteractionConfig;
 use coulomb_hands::run::demo::GraspLiftCarry;
 
 #[test]
-fn cube_follows_the_hand_through_lift_and_turn_then_falls_when_opened() {
+fn cube_follows_the_hand_through_lift_and_turn_then_rests_on_the_open_thumb() {
     let scene = GraspLiftCarry::new(InteractionConfig::default()).unwrap();
     let report = scene.run(0.5).unwrap();
     // Lifted with the hand: 20 cm up from its start at the origin.
@@ -17,9 +17,29 @@ fn cube_follows_the_hand_through_lift_and_turn_then_falls_when_opened() {
         "only {} contacts at the end of the carry",
         report.contacts_held
     );
-    // Opening the hand drops it back to the ground (its centre rests at 0).
+    // The turn put the thumb under the cube, its distal bone lying along
+    // the cube's face. Opening the hand, the fingers let go, and the cube
+    // stays on the thumb's line contact, as on a rigid thumb of the same
+    // capsules (`examples/demo_release.rs`): still over where it was held
+    // (x 0), sunk only by the thumb's opening.
+    assert_eq!(report.fingers_after_release, 0, "the fingers still press");
+    assert_eq!(report.contacts_after_release, 2, "the thumb's two pad bones carry it");
+    let rest = report.timeline.last().unwrap().cube;
+    assert!(rest[0].abs() < 0.01, "it rolled {:.1} mm off the thumb", rest[0] * 1e3);
+    let sunk = report.held_height - report.final_height;
+    assert!(sunk > 0.0 && sunk < 0.03, "sunk {:.1} mm on the open thumb", sunk * 1e3);
+}
+
+#[test]
+fn without_line_contacts_the_cube_rolls_off_the_open_thumb() {
+    // The negative control: the thumb's pad rings alone let it roll off and
+    // fall to the ground, 9 cm to the side (the book's "The demo").
+    let config = InteractionConfig { line_contacts: false, ..InteractionConfig::default() };
+    let report = GraspLiftCarry::new(config).unwrap().run(0.5).unwrap();
+    assert!(report.held_height > 0.19, "held at {:.3} m", report.held_height);
     assert!(report.final_height < 0.01, "still at {:.3} m after opening", report.final_height);
-    assert_eq!(report.contacts_after_release, 0);
+    let rest = report.timeline.last().unwrap().cube;
+    assert!(rest[0] > 0.05, "landed only {:.1} mm to the side", rest[0] * 1e3);
 }
 
 #[test]

@@ -210,34 +210,59 @@ impl Observer for Twister {
     }
 }
 
+/// The pinch twisted about its axis (x) with no gravity, its patches of
+/// `samples`, as pads' rings or as lines along the bones: the angle it
+/// turned (degrees), and the patches' twist stiffness about x (N·m/rad),
+/// each sample a spring of γ/N at its distance from the axis through its
+/// patch's centre.
+fn twist(samples: usize, line_contacts: bool) -> (f32, f32) {
+    let config = InteractionConfig {
+        gravity: Vec3::ZERO,
+        patch: PatchConfig { samples, ..PatchConfig::default() },
+        line_contacts,
+        ..InteractionConfig::default()
+    };
+    let mut p = pinch(config, 0.003);
+    let dt = p.world.config().dt;
+    // The turned angle, accumulated so full turns count.
+    let mut twister = Twister { object: p.box_id, turned: 0.0 };
+    p.drive((0.5 / dt) as usize, &mut [&mut twister]);
+    let stiffness = p
+        .world
+        .contacts()
+        .iter()
+        .map(|c| {
+            let n = c.samples.len() as f32;
+            let centre = c.samples.iter().sum::<Vec3>() / n;
+            let arm = |q: &Vec3| (*q - centre).with_x(0.0).length_squared();
+            c.stiffness / n * c.samples.iter().map(arm).sum::<f32>()
+        })
+        .sum();
+    (twister.turned.to_degrees(), stiffness)
+}
+
 #[test]
 fn nine_samples_resist_twisting_that_one_sample_does_not() {
-    // No gravity: only an external twist about the pinch axis (x).
-    let twist = |samples: usize| {
-        let config = InteractionConfig {
-            gravity: Vec3::ZERO,
-            patch: PatchConfig { samples, ..PatchConfig::default() },
-            ..InteractionConfig::default()
-        };
-        let mut p = pinch(config, 0.003);
-        let dt = p.world.config().dt;
-        // The turned angle, accumulated so full turns count.
-        let mut twister = Twister { object: p.box_id, turned: 0.0 };
-        p.drive((0.5 / dt) as usize, &mut [&mut twister]);
-        twister.turned.to_degrees()
-    };
-    let (one, nine) = (twist(1), twist(9));
-    // The patch's twist stiffness: 8 ring samples of γ/9 at the finger
-    // patch radius, on each of the two contacts. The torque is below the
-    // patches' torsional friction (2 · μ_st · f_n · ρ · 8/9 ≈ 0.0043 N·m),
-    // so the box settles at the elastic angle τ/k.
+    let (one, _) = twist(1, true);
+    // The torque is below the patches' torsional friction (for the rings,
+    // 2 · μ_st · f_n · ρ · 8/9 ≈ 0.0043 N·m), so the box settles at the
+    // elastic angle τ/k of the patches' springs: the pads' rings of 4 mm,
+    // or the lines along the 2.4 cm bones that lie along the faces, about
+    // 4 times as stiff.
+    let mut stiffnesses = Vec::new();
+    for line_contacts in [false, true] {
+        let (nine, stiffness) = twist(9, line_contacts);
+        let elastic = (0.002 / stiffness).to_degrees();
+        assert!(
+            (nine - elastic).abs() < 0.25 * elastic,
+            "9 samples, lines {line_contacts}: turned {nine:.1}°, elastic angle {elastic:.1}°"
+        );
+        stiffnesses.push(stiffness);
+    }
     let rho = PatchConfig::default().finger_radius;
-    let stiffness = 2.0 * 8.0 * (400.0 / 9.0) * rho * rho;
-    let elastic = (0.002 / stiffness).to_degrees();
-    assert!(
-        (nine - elastic).abs() < 0.25 * elastic,
-        "9 samples: turned {nine:.1}°, elastic angle {elastic:.1}°"
-    );
+    let ring = 2.0 * 8.0 * (400.0 / 9.0) * rho * rho;
+    assert!((stiffnesses[0] - ring).abs() < 0.05 * ring, "{stiffnesses:?} vs a ring's {ring}");
+    assert!(stiffnesses[1] > 3.0 * ring, "the lines' {stiffnesses:?} vs a ring's {ring}");
     assert!(one > 45.0, "1 sample: turned only {one:.1}°");
 }
 

@@ -272,6 +272,7 @@ impl StepScratch {
             damping_ratio: config.damping_ratio.unwrap_or(0.0),
             deviation_springs: config.deviation_springs,
             recentre: config.slip_recentre,
+            line_band: config.line_contacts.then_some(config.contact_offset),
         };
         StepScratch { detector, settings, ..StepScratch::default() }
     }

@@ -86,6 +86,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
         "jenga-one-hand",
         "jenga-two-hands",
         "flat-hand-lift",
+        "plate-carry",
         "catch",
         "slide-slippery",
         "tilt-wooden",
