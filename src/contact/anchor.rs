@@ -21,6 +21,9 @@ pub(crate) struct Anchor {
     pub samples: patch::Samples,
     /// The patch's radius on the object (m); a line's, half its length.
     pub radius: f32,
+    /// The bone's pad radius (m): the ring a line falls back to when it
+    /// slides off its flat face ([`Self::slide`]).
+    pub pad: f32,
     /// Whether the patch holds the object as a rigid support: a planar
     /// face of the object on the interior of a palm face, or along a
     /// finger bone that lies on it (a line contact).
@@ -256,7 +259,7 @@ impl Anchor {
         };
         let line = match (motion.now(), settings.line_band) {
             (BoneShape::Capsule(cap), Some(band)) => {
-                line::along_face(&cap, object, c, n, band, pad)
+                line::along_face(&cap, object, c, n, band, pad, patch.samples)
             }
             _ => None,
         };
@@ -285,6 +288,7 @@ impl Anchor {
             bone: bone_anchor,
             samples,
             radius,
+            pad,
             rigid,
             limited_depth: 0.0,
             skin: None,
@@ -358,6 +362,41 @@ impl Anchor {
             let on_surface = surface::project_to_surface(object.shape, pose, ci);
             samples.object.set(i, pose.inverse_transform_point(on_surface));
         }
+        if self.is_line() && !self.lies_flat(moved.point, moved.normal, object) {
+            self.lay_ring(moved.point, moved.normal, motion, object);
+        }
+    }
+
+    /// Whether the patch is a line along a finger bone (`line.rs`).
+    fn is_line(&self) -> bool {
+        self.rigid && matches!(self.bone, BoneAnchor::Capsule { .. })
+    }
+
+    /// Whether every sample lies on the flat face of C (normal `n`), as a
+    /// line's must.
+    fn lies_flat(&self, c: Vec3, n: Vec3, object: &ObjectView) -> bool {
+        let (shape, pose) = (object.shape, &object.pose);
+        (0..self.samples.len()).all(|i| {
+            let q = pose.transform_point(self.samples.object.get(i));
+            let on_plane = q - (q - c).dot(n) * n;
+            surface::face_cos(shape, pose, on_plane, n, self.pad)
+                .is_some_and(|cos| cos >= patch::PLANAR_COS)
+        })
+    }
+
+    /// Lays the pad's ring round C (normal `n`): what a line that slid off
+    /// its flat face becomes, since the face no longer holds it along the
+    /// bone.
+    fn lay_ring(&mut self, c: Vec3, n: Vec3, motion: &BoneMotion, object: &ObjectView) {
+        let (shape, pose) = (object.shape, &object.pose);
+        let rot_inv = self.bone.rotation(motion.now(), motion.palm_now()).inverse();
+        let ring = patch::sample_offsets(n, self.samples.len(), self.pad);
+        self.samples = patch::Samples::from_pairs(ring.into_iter().map(|o| {
+            let ci = surface::project_to_surface(shape, pose, c + o);
+            (pose.inverse_transform_point(ci), rot_inv * (ci - c))
+        }));
+        self.radius = self.pad;
+        self.rigid = false;
     }
 }
 

@@ -35,17 +35,19 @@ pub(crate) struct Line {
     pub across: f32,
 }
 
-/// How many halvings fit each end of the line to its face: to 1/64 of the
-/// bone's length.
+/// How many halvings fit each end of the line to its face: to 1/64 of
+/// its reach from C.
 const FIT_STEPS: usize = 6;
 
 /// The line along which capsule `bone` touches the face of C (outward
-/// normal `n`), if the bone lies along it, its surface within `band` (m)
-/// of C's tangent plane from end to end: its axis projected onto that
-/// plane, each end drawn in until the face under it is as flat as at C
-/// (within 2.6°). `None` when the bone presses with one end, or when the
-/// line is shorter than `2·pad` (m), the width of the bone's pad (the face
-/// curves away under it): its patch is then the pad's ring.
+/// normal `n`), if the bone lies along it: its surface within `band` (m)
+/// of C's tangent plane at both ends, and as parallel to the plane as the
+/// face must be flat (2.6°), so that its depth is the same along it. The
+/// line is its axis projected onto that plane, each end drawn in until the
+/// face under it is as flat as at C. `None` when the bone presses with one
+/// end, or when the line is shorter than `2·pad` (m), the width of the
+/// bone's pad (the face curves away under it): its patch is then the pad's
+/// ring.
 pub(crate) fn along_face(
     bone: &Capsule,
     object: &ObjectView,
@@ -53,12 +55,19 @@ pub(crate) fn along_face(
     n: Vec3,
     band: f32,
     pad: f32,
+    samples: usize,
 ) -> Option<Line> {
     // The bone's surface above the plane at each end of its axis: both
-    // within the band, or the bone is not lying along the face but
-    // pressing it with one end (a fingertip, however flat its pad).
+    // within the band, and level, or the bone is not lying along the face
+    // but pressing it with one end (a fingertip, however flat its pad).
     let height = |q: Vec3| (q - c).dot(n) - bone.radius;
-    if height(bone.a) > band || height(bone.b) > band {
+    let (h0, h1) = (height(bone.a), height(bone.b));
+    let level = (1.0 - PLANAR_COS * PLANAR_COS).sqrt() / PLANAR_COS;
+    if !(pad > 0.0)
+        || h0 > band
+        || h1 > band
+        || (h0 - h1).abs() > level * (bone.b - bone.a).length()
+    {
         return None;
     }
     let on_plane = |q: Vec3| q - (q - c).dot(n) * n;
@@ -89,10 +98,17 @@ pub(crate) fn along_face(
         *end = inside;
     }
     let half = 0.5 * (to - from).dot(along);
-    let middle = 0.5 * (from + to);
-    let side = n.cross(along) * pad;
-    let across = if on_face(middle + side) && on_face(middle - side) { pad } else { 0.0 };
-    (half >= pad).then_some(Line { middle, along, half, across })
+    if !(half >= pad) {
+        return None;
+    }
+    // The pad's width across it, where every sample of the ellipse lies on
+    // the flat face; else none (a face narrower than the pad: a knife edge).
+    let mut line = Line { middle: 0.5 * (from + to), along, half, across: pad };
+    let fits = sample_offsets(n, &line, samples).iter().all(|o| on_face(line.middle + *o));
+    if !fits {
+        line.across = 0.0;
+    }
+    Some(line)
 }
 
 /// The patch's sample offsets from the line's middle, where its contact
@@ -149,7 +165,7 @@ mod tests {
         let y = 0.03 + 0.007 + 0.001;
         let laid = bone(Vec3::new(-0.017, y, 0.004), Vec3::new(0.014, y, 0.004));
         let c = Vec3::new(0.0, 0.03, 0.004);
-        let line = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, 0.004).unwrap();
+        let line = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9).unwrap();
         assert!((line.half - 0.0155).abs() < 1e-5, "{line:?}");
         assert!((line.middle - Vec3::new(-0.0015, 0.03, 0.004)).length() < 1e-5);
         assert!((line.along - Vec3::X).length() < 1e-5);
@@ -163,13 +179,26 @@ mod tests {
         // From 1 cm inside the face's edge to 2 cm beyond it.
         let over = bone(Vec3::new(0.01, y, 0.0), Vec3::new(0.04, y, 0.0));
         let c = Vec3::new(0.015, 0.02, 0.0);
-        let line = along_face(&over, &view(&cube), c, Vec3::Y, 0.004, 0.004).unwrap();
+        let line = along_face(&over, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9).unwrap();
         let end = line.middle.x + line.half;
         assert!(end <= 0.02 && end > 0.0195, "{line:?}");
         // A fingertip pressing at 20°: only its end is within the band.
         let steep = bone(Vec3::new(-0.02, y + 0.0073, 0.0), Vec3::new(0.0, y, 0.0));
         let c = Vec3::new(0.0, 0.02, 0.0);
-        assert_eq!(along_face(&steep, &view(&cube), c, Vec3::Y, 0.004, 0.004), None);
+        assert_eq!(along_face(&steep, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9), None);
+        // At 4°, within the band from end to end, but its depth would differ
+        // by 1.4 mm along it: not lying along the face. At 2° it does.
+        for (deg, lies) in [(4.0f32, false), (2.0, true)] {
+            let rise = 0.02 * deg.to_radians().tan();
+            let tilted = bone(Vec3::new(-0.02, y + rise, 0.0), Vec3::new(0.0, y, 0.0));
+            let line = along_face(&tilted, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9);
+            assert_eq!(line.is_some(), lies, "{deg}°: {line:?}");
+        }
+        // A face 6 mm wide: a line along it, but no pad's width across it.
+        let strip = Cuboid::new(Vec3::new(0.02, 0.02, 0.003));
+        let line =
+            along_face(&over, &view(&strip), Vec3::new(0.015, 0.02, 0.0), Vec3::Y, 0.004, 0.004, 9);
+        assert_eq!(line.map(|l| l.across), Some(0.0));
     }
 
     #[test]
@@ -181,7 +210,7 @@ mod tests {
         let y = 0.03 + 0.007;
         let laid = bone(Vec3::new(-0.015, y, 0.0), Vec3::new(0.015, y, 0.0));
         let c = Vec3::new(0.0, 0.03, 0.0);
-        assert_eq!(along_face(&laid, &view(&ball), c, Vec3::Y, 0.004, 0.004), None);
+        assert_eq!(along_face(&laid, &view(&ball), c, Vec3::Y, 0.004, 0.004, 9), None);
     }
 
     #[test]

@@ -141,9 +141,10 @@ const ROCKING_SHARE: f32 = 0.25;
 /// bone ([`Rocking::rigid`]) the normal deviations get the stiffest spring
 /// the explicit integrator carries stably, whatever γ: the patch acts as a
 /// rigid support, and [`push_only`] keeps every sample's push ≥ 0, so the
-/// pressure can move only within the patch, as on a real face. A finger's
-/// pad is round, and an object rolls on it: its patch stays soft
-/// ([`Rocking::soft`]).
+/// pressure can move only within the patch, as on a real face. So does a
+/// line along a finger bone lying on a flat face (`line.rs`). A finger's
+/// pad pressed with its round end is round, and an object rolls on it:
+/// its patch stays soft ([`Rocking::soft`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Rocking {
     /// The patch's total normal stiffness against rocking (N/m), k/N per

@@ -67,8 +67,8 @@ impl AblationOptions {
 }
 
 /// The configurations compared: the thesis's law, each departure added to
-/// it alone, all of them (this crate's method), and all but the newest,
-/// the tracking filter, which shows what it adds to the rest.
+/// it alone, all of them (this crate's method), and all but the tracking
+/// filter, which shows what it adds to the rest.
 pub fn configurations() -> Vec<(String, InteractionConfig)> {
     let default = InteractionConfig::default();
     let thesis = Method::Thesis.config(default);

@@ -159,7 +159,7 @@ impl std::fmt::Display for ClosingVerdict {
         match (self.released, self.released_at) {
             (Some(true), Some(t)) => write!(f, "; released at {t:.2} s"),
             (Some(false), _) => write!(f, "; NOT released after opening"),
-            _ => write!(f, "; still closed when the recording ends"),
+            _ => write!(f, "; still gripped when the recording ends"),
         }
     }
 }

@@ -1,5 +1,5 @@
 //! The headless demo: a scripted hand grasps, lifts, carries, turns and
-//! drops a cube, and reports what the cube did.
+//! lets go of a cube, and reports what the cube did.
 
 use super::RunError;
 use super::drive::{Driver, PoseFn, StepView};

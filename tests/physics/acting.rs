@@ -107,11 +107,10 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
     assert!(clean.sagged < 0.001 && clean.off < 0.001, "clean: {clean:?}");
     let through_filter = runs().iter().filter(|(acting, _)| acting.sagged > 0.02).count();
     let as_tracked = runs().iter().filter(|(_, tracked)| tracked.sagged > 0.02).count();
-    // A third of the raw holds drop (the book's "Tracking noise"); through
-    // the filter, the rare drop follows a glitch.
+    // About half the raw holds drop (the book's "Tracking noise": 19 of 40
+    // at 2 mm); through the filter, the rare drop follows a glitch.
     assert!(through_filter <= 2, "{through_filter} of {STREAMS} dropped through the filter");
-    let why = format!("raw: {as_tracked} of {STREAMS}, through the filter: {through_filter}");
-    assert!(as_tracked >= through_filter + 3, "{why}");
+    assert!(as_tracked >= 6, "the raw tracked hand dropped only {as_tracked} of {STREAMS}");
 }
 
 #[test]

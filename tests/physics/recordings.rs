@@ -171,20 +171,13 @@ fn each_fist_of_the_grab_recording_holds_a_box_and_lets_it_go() {
     let (first, fall) = &verdicts[0];
     assert_held_then_released("grab.json.lz", first, *fall, 0.04);
     // The second fist opens 0.3 s before the recording ends. The 4 cm box
-    // is 3 mm wider than the opened hand's gap, and those phalanges, lying
-    // along its faces, still pinch it along their lengths when the
-    // recording ends (line contacts, `contact/line.rs`): held, not let go.
-    // Without line contacts it rolled out of their two small pads a
-    // quarter of a second after the hand opened. A 3.5 cm box, narrower
-    // than the gap, the same fist lets go.
+    // is 3 mm wider than the opened hand's gap, and those phalanges pinch
+    // it until it slips out, a quarter of a second after the hand opened:
+    // let go, but not yet fallen its size when the recording ends.
     let (second, _) = &verdicts[1];
     assert!(second.held() && second.drift < second.slip_bound, "{second}");
-    assert_eq!(second.released, None, "{second}");
-    assert!(first.open_at < second.closing_at);
-    let narrower = closings("grab.json.lz", "box:0.035:0.05");
-    let (second, _) = &narrower[1];
-    assert!(second.held() && second.drift < second.slip_bound, "{second}");
     assert_eq!(second.released, Some(true), "{second}");
+    assert!(first.open_at < second.closing_at);
 }
 
 #[test]

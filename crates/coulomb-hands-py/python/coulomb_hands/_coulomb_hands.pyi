@@ -117,6 +117,7 @@ class Config:
     engine_substeps: int
     deviation_springs: bool
     slip_recentre: bool
+    line_contacts: bool
     stability_limit: bool
     grab: Optional[str]
     hand_friction: bool
