@@ -16,6 +16,11 @@ use std::path::Path;
 /// The file's format marker.
 pub const FORMAT: &str = "coulomb-hands-session/1";
 
+/// Config fields added since [`FORMAT`] began, as they appear in a session
+/// file, and how a session written before each ran.
+const FIELDS_ADDED: [(&str, fn(&mut InteractionConfig)); 1] =
+    [("\"line_contacts\"", |c| c.line_contacts = false)];
+
 /// A recorded session.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Session {
@@ -144,8 +149,15 @@ impl Session {
     /// format marker. The calls themselves are checked when replayed.
     pub fn parse(file: &str, text: &str) -> Result<Session, SessionError> {
         let fail = |reason: String| SessionError::File { path: file.to_string(), reason };
-        let session: Session =
+        let mut session: Session =
             serde_json::from_str(text).map_err(|e| fail(crate::file_error::json_reason(&e)))?;
+        // A session records every field of its config. One written before a
+        // field existed ran without what it turns on, and replays so.
+        for (field, as_it_ran) in FIELDS_ADDED {
+            if !text.contains(field) {
+                as_it_ran(&mut session.config);
+            }
+        }
         if session.format != FORMAT {
             return Err(fail(format!("format is \"{}\", expected \"{FORMAT}\"", session.format)));
         }
@@ -162,4 +174,18 @@ impl Session {
 /// The states of all objects, in id order.
 pub fn object_states(world: &InteractionWorld) -> Vec<ObjectState> {
     world.object_ids().filter_map(|id| world.object_state(id).ok()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_session_written_before_line_contacts_replays_without_them() {
+        let now = serde_json::to_string(&Session::new(InteractionConfig::default())).unwrap();
+        assert!(Session::parse("now", &now).unwrap().config.line_contacts);
+        let before = now.replace(r#""line_contacts":true,"#, "");
+        assert_ne!(before, now);
+        assert!(!Session::parse("before", &before).unwrap().config.line_contacts);
+    }
 }
