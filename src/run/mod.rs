@@ -7,7 +7,7 @@
 //!   ([`grasp`] finds where a recorded hand closes);
 //! * [`soak`]: a recording replayed in a loop in one world, watching
 //!   memory and speed;
-//! * [`live`]: a live Leap Motion stream;
+//! * [`live`]: a live Leap Motion stream (feature `live`, on by default);
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
 //! * [`report`]: the scenario and replay runs that `coulomb-hands report`
@@ -19,6 +19,7 @@ pub mod closing;
 pub mod demo;
 pub mod drive;
 pub mod grasp;
+#[cfg(feature = "live")]
 pub mod live;
 pub mod observe;
 pub mod replay;
