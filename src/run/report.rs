@@ -125,9 +125,15 @@ impl ReplayInput {
     /// the file, the frame and the field.
     pub fn load(path: &Path) -> Result<ReplayInput, RunError> {
         let recording = recording::load(path)?;
-        let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let name = path.strip_prefix(root).unwrap_or(path).display().to_string();
+        ReplayInput::new(name, recording)
+    }
+
+    /// A recording already read (from its bytes, [`recording::from_bytes`]),
+    /// `name`d so in the report.
+    pub fn new(name: String, recording: Recording) -> Result<ReplayInput, RunError> {
+        let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
         Ok(ReplayInput { name, recording, playback })
     }
 
