@@ -36,6 +36,7 @@
 pub mod contact;
 pub mod eval;
 pub mod file_error;
+pub mod files;
 pub mod friction;
 pub mod grab;
 pub mod hand;

@@ -22,6 +22,7 @@ struct Cli {
 enum Command {
     Demo(cli::demo::DemoArgs),
     Replay(cli::replay::ReplayArgs),
+    #[cfg(feature = "live")]
     Live(cli::live::LiveArgs),
     Scenario(cli::scenario::ScenarioArgs),
     Eval(cli::eval::EvalArgs),
@@ -35,6 +36,7 @@ impl Command {
         match self {
             Command::Demo(args) => args.run(),
             Command::Replay(args) => args.run(),
+            #[cfg(feature = "live")]
             Command::Live(args) => args.run(),
             Command::Scenario(args) => args.run(),
             Command::Eval(args) => args.run(),

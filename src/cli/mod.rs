@@ -7,6 +7,7 @@ pub mod args;
 pub mod bench;
 pub mod demo;
 pub mod eval;
+#[cfg(feature = "live")]
 pub mod live;
 pub mod mesh;
 pub mod options;

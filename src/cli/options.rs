@@ -9,9 +9,8 @@ use coulomb_hands::input::playback::DEFAULT_GRACE;
 use coulomb_hands::output::Session;
 use coulomb_hands::output::trace::TraceFile;
 use coulomb_hands::run::observe::TraceWriter;
-use coulomb_hands::run::replay::scene_world;
 use coulomb_hands::scene::Scene;
-use coulomb_hands::{InteractionConfig, InteractionWorld, Method, RunError};
+use coulomb_hands::{InteractionWorld, Method, RunError};
 use std::path::PathBuf;
 
 /// `--json`: the result as one JSON object on stdout, for programs.
@@ -92,12 +91,14 @@ impl SessionArgs {
 
     /// A world for `config` with `scene` in it, recording its session if
     /// `--record` asks for it.
+    #[cfg(feature = "live")]
     pub fn world(
         &self,
-        config: InteractionConfig,
+        config: coulomb_hands::InteractionConfig,
         scene: Option<&Scene>,
     ) -> Result<InteractionWorld, RunError> {
-        Ok(scene_world(config, scene, self.record.is_some())?)
+        let record = self.record.is_some();
+        Ok(coulomb_hands::run::replay::scene_world(config, scene, record)?)
     }
 
     /// Writes the session `world` recorded to `--record`'s file, if asked.

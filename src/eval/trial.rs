@@ -125,12 +125,22 @@ pub fn trial(condition: &Condition, task: &Task) -> Result<TrialRun, RunError> {
 /// next task as it finishes one (each trial on its own world, so the
 /// outcomes do not depend on how many), calling `progress(done)` as they
 /// finish. The outcomes are in task order; the first error is returned.
+/// One thread, or a target without threads (wasm32), runs them in turn on
+/// the caller's.
 pub fn run_all(
     condition: &Condition,
     tasks: &[Task],
     threads: usize,
     progress: &mut dyn FnMut(usize),
 ) -> Result<Vec<TrialRun>, RunError> {
+    if threads <= 1 || cfg!(target_arch = "wasm32") {
+        let mut out = Vec::with_capacity(tasks.len());
+        for (done, task) in tasks.iter().enumerate() {
+            out.push(trial(condition, task));
+            progress(done + 1);
+        }
+        return out.into_iter().collect();
+    }
     use std::sync::atomic::{AtomicUsize, Ordering};
     let next = AtomicUsize::new(0);
     let mut out: Vec<Option<Result<TrialRun, RunError>>> = (0..tasks.len()).map(|_| None).collect();

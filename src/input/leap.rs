@@ -45,7 +45,7 @@ fn err(
 
 /// Reads a `.json.lz` or `.json` recording from disk.
 pub fn load(path: &Path) -> Result<LeapRecording, InputError> {
-    let (name, text) = super::read_text(path)?;
+    let (name, text) = super::read_text(path, &crate::files::FileSystem)?;
     parse(&name, &text)
 }
 

@@ -85,7 +85,7 @@ impl HandLandmarks {
 
 /// Reads a `.pbtxt` hand landmarker result from disk.
 pub fn load(path: &std::path::Path) -> Result<HandLandmarks, InputError> {
-    let (name, text) = super::read_text(path)?;
+    let (name, text) = super::read_text(path, &crate::files::FileSystem)?;
     parse(&name, &text)
 }
 

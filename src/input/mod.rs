@@ -87,17 +87,24 @@ pub struct InputError {
     pub reason: String,
 }
 
-/// A recording file's name (for messages) and text; an unreadable or
-/// non-UTF-8 file is an error naming it.
-fn read_text(path: &std::path::Path) -> Result<(String, String), InputError> {
+/// A recording file's name (for messages) and text, read from `files`;
+/// an unreadable or non-UTF-8 file is an error naming it.
+fn read_text(
+    path: &std::path::Path,
+    files: &dyn crate::files::Files,
+) -> Result<(String, String), InputError> {
     let name = path.display().to_string();
-    let fail = |reason: String| InputError {
-        source_name: name.clone(),
-        frame: None,
-        field: "file".into(),
-        reason,
-    };
-    let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
-    let text = String::from_utf8(bytes).map_err(|_| fail("not UTF-8 text".into()))?;
+    let bytes = files.read(path).map_err(|e| file_error(&name, e.to_string()))?;
+    let text = text_of(&name, bytes)?;
     Ok((name, text))
+}
+
+/// A recording file's bytes as text; not UTF-8 is an error naming `name`.
+fn text_of(name: &str, bytes: Vec<u8>) -> Result<String, InputError> {
+    String::from_utf8(bytes).map_err(|_| file_error(name, "not UTF-8 text".into()))
+}
+
+/// An error of the file `name` as a whole.
+fn file_error(name: &str, reason: String) -> InputError {
+    InputError { source_name: name.to_string(), frame: None, field: "file".into(), reason }
 }

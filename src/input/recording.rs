@@ -6,6 +6,7 @@
 use super::convert::Conversion;
 use super::playback::Playback;
 use super::{InputError, TrackingFrame, joints, leap};
+use crate::files::{FileSystem, Files};
 use glam::{Quat, Vec3};
 use std::path::Path;
 
@@ -91,9 +92,25 @@ impl Recording {
 
 /// Reads a recording of any supported format from disk.
 pub fn load(path: &Path) -> Result<Recording, InputError> {
-    let (name, text) = super::read_text(path)?;
-    let jsonl = path.extension().is_some_and(|e| e == "jsonl");
-    parse(&name, &text, jsonl)
+    load_from(path, &FileSystem)
+}
+
+/// [`load`], the file read from `files`.
+pub fn load_from(path: &Path, files: &dyn Files) -> Result<Recording, InputError> {
+    let (name, text) = super::read_text(path, files)?;
+    parse(&name, &text, is_jsonl(path))
+}
+
+/// A recording file's bytes, as [`load`] reads them: `name` (the file's
+/// name) says by its extension whether it is JSON Lines, and names it in
+/// errors.
+pub fn from_bytes(name: &str, bytes: Vec<u8>) -> Result<Recording, InputError> {
+    parse(name, &super::text_of(name, bytes)?, is_jsonl(Path::new(name)))
+}
+
+/// Whether the file's extension says it is JSON Lines (a joint recording).
+fn is_jsonl(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e == "jsonl")
 }
 
 /// Decodes a recording's text: a joint recording if it starts with that
@@ -156,6 +173,19 @@ mod tests {
         let tip = pose.fingers[2][2].b;
         assert!(tip.z < palm.z - 0.08, "fingertip {tip} ahead of the palm {palm}");
         assert!((pose.palm.normal() - Vec3::NEG_Y).length() < 1e-3);
+    }
+
+    #[test]
+    fn a_recording_s_bytes_read_as_its_file_does() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        for file in ["data/joints/pinch-57fps.jsonl", "data/leap/pinch.json.lz"] {
+            let path = root.join(file);
+            let name = path.display().to_string();
+            let bytes = std::fs::read(&path).unwrap();
+            assert_eq!(from_bytes(&name, bytes).unwrap(), load(&path).unwrap(), "{file}");
+        }
+        let e = from_bytes("x.json", vec![0xff]).unwrap_err().to_string();
+        assert_eq!(e, "x.json: file: not UTF-8 text");
     }
 
     #[test]

@@ -6,24 +6,28 @@
 //! * [`replay`]: recordings replayed, with objects at a recorded grasp
 //!   ([`grasp`] finds where a recorded hand closes);
 //! * [`soak`]: a recording replayed in a loop in one world, watching
-//!   memory and speed;
-//! * [`live`]: a live Leap Motion stream;
+//!   memory and speed by the system's clock (not on wasm32);
+//! * [`live`]: a live Leap Motion stream (feature `live`, on by default);
 //! * [`scenario`]: the interaction catalogue, scenario files and checks;
 //! * [`demo`]: the scripted grasp-lift-carry demo;
 //! * [`report`]: the scenario and replay runs that `coulomb-hands report`
 //!   shows;
-//! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side.
+//! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side;
+//! * [`clock`]: the wall clock the timed runs are given.
 
 pub mod bench;
+pub mod clock;
 pub mod closing;
 pub mod demo;
 pub mod drive;
 pub mod grasp;
+#[cfg(feature = "live")]
 pub mod live;
 pub mod observe;
 pub mod replay;
 pub mod report;
 pub mod scenario;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod soak;
 
 use crate::file_error::FileError;

@@ -154,6 +154,12 @@ pub fn is_session_file(path: &Path) -> bool {
 /// Replays a recorded session file, bit for bit, and sums up its objects.
 pub fn replay_session_file(file: &Path) -> Result<SessionSummary, RunError> {
     let session = Session::load(file)?;
+    replay_session(&file.display().to_string(), &session)
+}
+
+/// Replays a session (read from its text by [`Session::parse`]; `name`
+/// is its file's, for the summary), bit for bit, and sums up its objects.
+pub fn replay_session(name: &str, session: &Session) -> Result<SessionSummary, RunError> {
     // Objects are followed from the end of the first step, when all exist.
     let mut summary: Option<Result<Summary, WorldError>> = None;
     let replayed = session.replay(|w| {
@@ -164,14 +170,13 @@ pub fn replay_session_file(file: &Path) -> Result<SessionSummary, RunError> {
             summary = Some(Err(e));
         }
     });
-    let world = replayed.map_err(|e| e.in_file(file))?;
+    let world = replayed.map_err(|e| e.in_file(Path::new(name)))?;
     let objects = match summary.transpose()? {
         Some(s) => s.objects(&world)?,
         None => Vec::new(),
     };
-    let session_name = file.display().to_string();
     Ok(SessionSummary {
-        session: session_name,
+        session: name.to_string(),
         steps: session.steps(),
         objects,
         time: world.time(),
@@ -196,6 +201,25 @@ pub fn replay_file(path: &Path, options: &ReplayOptions) -> Result<Replayed, Run
         return Ok(Replayed::Session(replay_session_file(path)?));
     }
     let recording = crate::input::recording::load(path)?;
+    Ok(Replayed::Recording(replay_recording(&recording, options, &mut [])?.0))
+}
+
+/// [`replay_file`] of a file's bytes (`name` is the file's name, whose
+/// extension says whether a recording is JSON Lines).
+pub fn replay_bytes(
+    name: &str,
+    bytes: Vec<u8>,
+    options: &ReplayOptions,
+) -> Result<Replayed, RunError> {
+    let bytes = match String::from_utf8(bytes) {
+        Ok(text) if Session::sniff(&text) => {
+            let session = Session::parse(name, &text)?;
+            return Ok(Replayed::Session(replay_session(name, &session)?));
+        }
+        Ok(text) => text.into_bytes(),
+        Err(e) => e.into_bytes(),
+    };
+    let recording = crate::input::recording::from_bytes(name, bytes)?;
     Ok(Replayed::Recording(replay_recording(&recording, options, &mut [])?.0))
 }
 

@@ -5,6 +5,7 @@
 //! is a section entry with its error, not an error of the report.
 
 use super::RunError;
+use super::clock::Clock;
 use super::closing::{ClosingVerdict, Hold};
 use super::drive::{Observer, StepView};
 use super::grasp::{SAMPLE_STEP, find_grasps, is_power_grasp};
@@ -15,7 +16,6 @@ use crate::input::recording::{self, Recording};
 use crate::output::report::{ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict};
 use crate::pipeline::InteractionConfig;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// Records every object's hand force (magnitude, N) and height (m) after
 /// each step.
@@ -48,12 +48,18 @@ impl Observer for ObjectSeriesRecorder {
 }
 
 /// Runs `scenario` once, recording its objects; the run's verdict, or its
-/// error.
+/// error. Its wall time is the system clock's.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn scenario_run(scenario: &Scenario) -> ScenarioRun {
+    scenario_run_with(scenario, &super::clock::SystemClock::new())
+}
+
+/// [`scenario_run`], its wall time read from `clock`.
+pub fn scenario_run_with(scenario: &Scenario, clock: &dyn Clock) -> ScenarioRun {
     let mut recorder = ObjectSeriesRecorder::default();
-    let started = Instant::now();
+    let started = clock.now();
     let result = scenario.run(&mut [&mut recorder]);
-    let wall_s = started.elapsed().as_secs_f64();
+    let wall_s = clock.now().saturating_sub(started).as_secs_f64();
     let (passed, checks, error) = match result {
         Ok(r) => {
             let verdict = |c: &super::scenario::check::CheckResult| Verdict {
@@ -119,9 +125,15 @@ impl ReplayInput {
     /// the file, the frame and the field.
     pub fn load(path: &Path) -> Result<ReplayInput, RunError> {
         let recording = recording::load(path)?;
-        let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
         let root = Path::new(env!("CARGO_MANIFEST_DIR"));
         let name = path.strip_prefix(root).unwrap_or(path).display().to_string();
+        ReplayInput::new(name, recording)
+    }
+
+    /// A recording already read (from its bytes, [`recording::from_bytes`]),
+    /// `name`d so in the report.
+    pub fn new(name: String, recording: Recording) -> Result<ReplayInput, RunError> {
+        let playback = recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE)?;
         Ok(ReplayInput { name, recording, playback })
     }
 

@@ -30,6 +30,7 @@
 use super::material::Material;
 use super::object::{GammaMode, ObjectDesc, ShapeDesc, StaticDesc};
 use super::tower::Tower;
+use crate::files::{FileSystem, Files};
 use glam::{Quat, Vec3};
 use std::path::Path;
 
@@ -120,15 +121,26 @@ impl Scene {
 
     /// Parses scene text whose mesh file paths are relative to `dir`.
     pub fn parse_in(file: &str, text: &str, dir: &Path) -> Result<Scene, SceneError> {
-        Self::from_entry(file, SceneError::json(file, text)?, dir)
+        Self::parse_with(file, text, dir, &FileSystem)
+    }
+
+    /// [`Self::parse_in`], the mesh files read from `files` ([`crate::files`]).
+    pub fn parse_with(
+        file: &str,
+        text: &str,
+        dir: &Path,
+        files: &dyn Files,
+    ) -> Result<Scene, SceneError> {
+        Self::from_entry(file, SceneError::json(file, text)?, dir, files)
     }
 
     /// Checks a parsed scene and loads its mesh files (`file` names it in
-    /// errors; mesh paths are relative to `dir`).
+    /// errors; mesh paths are relative to `dir`, read from `files`).
     pub(crate) fn from_entry(
         file: &str,
         mut entry: SceneEntry,
         dir: &Path,
+        files: &dyn Files,
     ) -> Result<Scene, SceneError> {
         let fail = |reason: String| SceneError::new(file, reason);
         let shapes = entry.objects.iter_mut().map(|o| (o.name.clone(), &mut o.shape));
@@ -137,7 +149,7 @@ impl Scene {
             if let ShapeDesc::Mesh(m) = shape
                 && m.mesh.triangles.is_empty()
             {
-                m.mesh = super::mesh::TriangleMesh::load(&dir.join(&m.file))
+                m.mesh = super::mesh::TriangleMesh::load_from(&dir.join(&m.file), files)
                     .map_err(|e| fail(format!("object '{name}': shape.Mesh.file: {e}")))?;
             }
         }
@@ -266,6 +278,22 @@ mod tests {
         .unwrap_err()
         .to_string();
         assert!(material.contains("unknown name 'cheese'"), "{material}");
+    }
+
+    #[test]
+    fn mesh_files_may_come_as_bytes() {
+        let text = r#"{"objects": [{"name": "pawn", "mass": 0.03, "material": "wood",
+            "position": [0, 0, 0], "shape": {"Mesh": {"file": "../assets/meshes/pawn.obj",
+            "body": {"Voxels": {"size": 0.003}}}}}]}"#;
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+        let on_disk = Scene::parse_in("s.json", text, &dir).unwrap();
+        let pawn = std::fs::read(dir.join("../assets/meshes/pawn.obj")).unwrap();
+        let files = std::collections::BTreeMap::from([("../assets/meshes/pawn.obj".into(), pawn)]);
+        assert_eq!(Scene::parse_with("s.json", text, Path::new(""), &files).unwrap(), on_disk);
+        let none = crate::files::NoFiles;
+        let e = Scene::parse_with("s.json", text, Path::new(""), &none).unwrap_err().to_string();
+        let why = "../assets/meshes/pawn.obj: not among the files given";
+        assert_eq!(e, format!("s.json: object 'pawn': shape.Mesh.file: {why}"));
     }
 
     #[test]

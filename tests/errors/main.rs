@@ -6,6 +6,7 @@ mod bench;
 mod cli;
 mod input;
 mod joints;
+#[cfg(feature = "live")]
 mod live;
 mod mesh;
 mod report;

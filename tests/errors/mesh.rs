@@ -139,3 +139,27 @@ fn gltf_indices_beyond_the_vertices_are_an_error_not_an_overflow() {
     let e = load_error(&dir, "huge.gltf", gltf(&[tet(), (positions, huge)], None).to_string());
     names(e, &["huge.gltf: triangle 7 refers to a vertex beyond the 8 there are"]);
 }
+
+#[test]
+fn meshes_from_bytes_and_their_buffers_from_the_files_given() {
+    let dir = Scratch::new("mesh-bytes");
+    let obj = TriangleMesh::load(&dir.file("tet.obj", TETRAHEDRON_OBJ)).unwrap();
+    assert_eq!(TriangleMesh::from_bytes("tet.obj", TETRAHEDRON_OBJ.as_bytes()).unwrap(), obj);
+    let e = TriangleMesh::from_bytes("tet.ply", b"ply\n").unwrap_err().to_string();
+    names(e, &["tet.ply: unknown mesh format \".ply\""]);
+    // The same glTF with its buffer in a file of its own, beside it.
+    let mut external = gltf(&[tet()], None);
+    let uri = external["buffers"][0]["uri"].as_str().unwrap().to_string();
+    let (_, data) = uri.split_once(";base64,").unwrap();
+    let bin = base64::engine::general_purpose::STANDARD.decode(data).unwrap();
+    external["buffers"][0]["uri"] = "tet.bin".into();
+    let text = external.to_string();
+    dir.file("tet.bin", &bin);
+    let from_disk = TriangleMesh::load(&dir.file("tet.gltf", &text)).unwrap();
+    let files = std::collections::BTreeMap::from([("meshes/tet.bin".into(), bin)]);
+    let dir_in_memory = std::path::Path::new("meshes");
+    let given = TriangleMesh::parse_with("tet.gltf", text.as_bytes(), dir_in_memory, &files);
+    assert_eq!(given.unwrap(), from_disk);
+    let e = TriangleMesh::from_bytes("tet.gltf", text.as_bytes()).unwrap_err().to_string();
+    names(e, &["tet.gltf: buffer 0 (tet.bin): not among the files given"]);
+}

@@ -73,3 +73,21 @@ fn the_cli_names_the_session_file_of_a_failed_replay() {
     let e = cli_error(&["replay", &file.display().to_string()]);
     names(e, &[&dir.text("c.json"), ": config: gravity: must be finite", "inf"]);
 }
+
+#[test]
+fn a_session_s_bytes_replay_as_its_file_does_and_name_it() {
+    use coulomb_hands::run::replay::{ReplayOptions, Replayed, replay_bytes, replay_file};
+    let dir = Scratch::new("session-bytes");
+    let cube = ObjectDesc::cuboid("cube", Vec3::splat(0.04), 0.05, Vec3::Y);
+    let calls = vec![Call::AddObject(cube), Call::Step, Call::Step];
+    let file = dir.path("s.json");
+    Session { calls, ..Session::new(InteractionConfig::default()) }.save(&file).unwrap();
+    let (name, bytes) = (dir.text("s.json"), std::fs::read(&file).unwrap());
+    let options = ReplayOptions::default();
+    let json = |r: Replayed| serde_json::to_string(&r).unwrap();
+    let from_bytes = replay_bytes(&name, bytes, &options).unwrap();
+    assert_eq!(json(from_bytes), json(replay_file(&file, &options).unwrap()));
+    let bad = session_text(r#"["step", {"clear_hand_pose": 3}]"#).into_bytes();
+    let e = replay_bytes("s.json", bad, &options).unwrap_err();
+    names(e, &["s.json: session call 1: hand 3 does not exist"]);
+}

@@ -1,13 +1,13 @@
 //! The bench's scenes measure what they say: every bone a sweep scene is
 //! named after presses on a box, every held box stays held while the bench
 //! times it, and the reference scene's tower sleeps, or stays awake with
-//! sleeping off.
+//! sleeping off. Its times are read from the clock it is given.
 
 use crate::position;
 use coulomb_hands::InteractionWorld;
 use coulomb_hands::run::bench::{
     SWEEP_BONES, WARM_UP, bench_config, bones_pressing, cluttered_scene, held_boxes_scene,
-    keep_awake, sweep_scene,
+    keep_awake, sweep_scene, time_split_with,
 };
 use coulomb_hands::run::drive::{Driver, StepView};
 
@@ -88,4 +88,15 @@ fn a_cluttered_scene_holds_its_boxes_while_its_clutter_rests_asleep() {
             state.sleeping
         );
     }
+}
+
+#[test]
+fn the_bench_reads_the_clock_it_is_given() {
+    // A clock that moves 1 µs at each reading: the stopwatch reads it before a
+    // step, between its halves and after it, so each half takes 1 µs.
+    let now = std::cell::Cell::new(std::time::Duration::ZERO);
+    let clock = || now.replace(now.get() + std::time::Duration::from_micros(1));
+    let mut world = InteractionWorld::new(bench_config()).expect("the bench's config");
+    let times = time_split_with(&mut world, 250, &clock, &mut |_| {}).expect("no hands to fail");
+    assert_eq!((times.interaction_us, times.rapier_us, times.full_us), (1.0, 1.0, 2.0));
 }

@@ -7,7 +7,7 @@ use coulomb_hands::eval::board::{self, CUBE_HALF, SQUARE, SQUARES};
 use coulomb_hands::eval::noise::TrackingNoise;
 use coulomb_hands::eval::perception::{EYE, Perception};
 use coulomb_hands::eval::user::{Eyes, Sight, Strategy, User, UserParams};
-use coulomb_hands::eval::{AccuracyOptions, accuracy};
+use coulomb_hands::eval::{AccuracyOptions, Conditions, accuracy};
 use coulomb_hands::run::drive::{Driver, StepView};
 use coulomb_hands::{InteractionConfig, Method};
 use glam::Vec3;
@@ -35,6 +35,21 @@ fn every_method_completes_the_reduced_accuracy_study_with_errors_on_the_board() 
             assert!(m.failed <= 2, "{name}: {} of 10 trials failed", m.failed);
         }
     }
+}
+
+#[test]
+fn trials_run_in_turn_on_one_thread_end_as_they_do_on_several() {
+    // One thread (and wasm32, which has none) runs the trials on the caller's.
+    let study = |threads| {
+        let mut options = AccuracyOptions { users: 1, trials: 3, seed: 5, ..Default::default() };
+        options.methods = vec![Method::Coulomb];
+        options.strategies = vec![Strategy::Lift];
+        options.conditions = Conditions { threads, ..Conditions::default() };
+        let mut calls = 0;
+        let report = accuracy(&options, &mut |_, _| calls += 1).expect("the study runs");
+        (serde_json::to_string(&report).expect("JSON"), calls)
+    };
+    assert_eq!(study(1), study(2));
 }
 
 /// A user with no noise of its own who accepts 3 mm.

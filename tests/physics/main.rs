@@ -14,7 +14,9 @@ mod glitch;
 mod grasp;
 mod grip;
 mod lifecycle;
+#[cfg(feature = "live")]
 mod live;
+#[cfg(feature = "live")]
 mod live_feed;
 mod meshes;
 mod nearby;

@@ -21,7 +21,9 @@
 //!
 //! Every figure is the median, over blocks of [`BLOCK`] steps, of a
 //! block's mean µs per step: a block that another process interrupted
-//! moves it little.
+//! moves it little. The time is read from the [`Clock`] the caller passes
+//! ([`run_with`], [`time_split_with`]); [`run`] and [`time_split`] read
+//! the system's.
 
 pub mod mujoco;
 mod objects;
@@ -34,12 +36,15 @@ pub use objects::{DEFAULT_OBJECTS, HELD, MAX_OBJECTS, cluttered_scene};
 pub use scene::{BOXES_PER_HAND, MAX_HANDS, held_boxes_scene, sweep_scene};
 
 use super::RunError;
+use super::clock::Clock;
+#[cfg(not(target_arch = "wasm32"))]
+use super::clock::SystemClock;
 use super::drive::{Driver, Observer, StepView};
 use crate::hand::BONES_PER_HAND;
 use crate::pipeline::{InteractionConfig, InteractionWorld, WorldError};
 use rapier3d::prelude::RigidBodyActivation;
 use std::path::PathBuf;
-use std::time::Instant;
+use std::time::Duration;
 
 /// Bones in contact in the sweep (thesis Fig. 5.6), up to 8 hands.
 pub const SWEEP_BONES: [usize; 5] = [6, 16, 32, 64, 128];
@@ -121,9 +126,19 @@ pub enum BenchError {
 /// (with MuJoCo's side beside it if asked for, checked before anything is
 /// timed, so a missing MuJoCo fails at once), then the cluttered scenes.
 /// `progress` is told of every block of our steps done
-/// ([`BenchOptions::total_steps`] in all).
+/// ([`BenchOptions::total_steps`] in all). Timed by the system's clock.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(
     options: &BenchOptions,
+    progress: &mut dyn FnMut(u64),
+) -> Result<BenchReport, BenchError> {
+    run_with(options, &SystemClock::new(), progress)
+}
+
+/// [`run`], timed by `clock`.
+pub fn run_with(
+    options: &BenchOptions,
+    clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
 ) -> Result<BenchReport, BenchError> {
     if let Some(python) = &options.mujoco {
@@ -137,11 +152,11 @@ pub fn run(
         if pressing != bones {
             return Err(BenchError::NotPressing { bones, pressing });
         }
-        let times = time_split(&mut world, options.steps, progress)?;
+        let times = time_split_with(&mut world, options.steps, clock, progress)?;
         sweep.push(SweepPoint { bones, hands: hands.len(), samples_per_contact: SAMPLES, times });
     }
-    let (reference, mujoco) = reference(options, progress)?;
-    let objects = cluttered(&options.objects, options.steps, progress)?;
+    let (reference, mujoco) = reference(options, clock, progress)?;
+    let objects = cluttered(&options.objects, options.steps, clock, progress)?;
     Ok(BenchReport { sweep, reference, mujoco, objects })
 }
 
@@ -154,6 +169,7 @@ pub fn run(
 fn cluttered(
     counts: &[usize],
     steps: usize,
+    clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
 ) -> Result<Vec<ObjectsPoint>, BenchError> {
     let mut worlds = Vec::with_capacity(counts.len());
@@ -165,7 +181,7 @@ fn cluttered(
     let mut blocks = vec![Vec::new(); worlds.len()];
     for n in block_lengths(steps) {
         for (world, blocks) in worlds.iter_mut().zip(&mut blocks) {
-            blocks.push(time_block(world, n)?);
+            blocks.push(time_block(world, n, clock)?);
             progress(n as u64);
         }
     }
@@ -195,6 +211,7 @@ pub fn objects_growth(points: &[ObjectsPoint]) -> Option<(f64, usize, usize)> {
 /// after each block of ours ([`mujoco::Rival`]).
 fn reference(
     options: &BenchOptions,
+    clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
 ) -> Result<(ReferenceScene, Option<MujocoStep>), BenchError> {
     let mut rival = match &options.mujoco {
@@ -203,16 +220,18 @@ fn reference(
     };
     let (mut asleep_pairs, mut awake_pairs) = (Vec::new(), Vec::new());
     let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
-    let start = Instant::now();
+    let start = clock.now();
     steps(&mut world, ONE_SECOND, progress)?;
-    let settling_us = start.elapsed().as_secs_f64() * 1e6 / ONE_SECOND as f64;
-    let asleep = time_against(&mut world, options.steps, progress, &mut rival, &mut asleep_pairs)?;
+    let settling_us = elapsed(clock, start).as_secs_f64() * 1e6 / ONE_SECOND as f64;
+    let (n, pairs) = (options.steps, &mut asleep_pairs);
+    let asleep = time_against(&mut world, n, clock, progress, &mut rival, pairs)?;
     let (bones_pressing, objects) = (bones_pressing(&world), world.object_count());
     drop(world);
     let (mut world, _) = held_boxes_scene(bench_config(), options.boxes, options.tower)?;
     keep_awake(&mut world);
     steps(&mut world, WARM_UP, progress)?;
-    let awake = time_against(&mut world, options.steps, progress, &mut rival, &mut awake_pairs)?;
+    let (n, pairs) = (options.steps, &mut awake_pairs);
+    let awake = time_against(&mut world, n, clock, progress, &mut rival, pairs)?;
     let scene = ReferenceScene { bones_pressing, objects, asleep, awake, settling_us };
     let mujoco = rival.map(|rival| {
         let theirs = asleep_pairs.iter().chain(&awake_pairs).map(|p| p[1]).collect();
@@ -233,11 +252,12 @@ fn reference(
 fn time_against(
     world: &mut InteractionWorld,
     steps: usize,
+    clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
     rival: &mut Option<mujoco::Rival>,
     pairs: &mut Vec<[f64; 2]>,
 ) -> Result<StepTimes, BenchError> {
-    time_blocks(world, steps, progress, &mut |n, ours| {
+    time_blocks(world, steps, clock, progress, &mut |n, ours| {
         if let Some(rival) = rival.as_mut() {
             pairs.push([ours[2], rival.time(n)?]);
         }
@@ -273,13 +293,25 @@ pub fn keep_awake(world: &mut InteractionWorld) {
 
 /// Times `steps` steps of `world` through the driver loop, the
 /// interaction layer apart from rapier's step: per quantity, the median
-/// over blocks of [`BLOCK`] steps of the block's mean.
+/// over blocks of [`BLOCK`] steps of the block's mean. Timed by the
+/// system's clock.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn time_split(
     world: &mut InteractionWorld,
     steps: usize,
     progress: &mut dyn FnMut(u64),
 ) -> Result<StepTimes, BenchError> {
-    time_blocks(world, steps, progress, &mut |_, _| Ok(()))
+    time_split_with(world, steps, &SystemClock::new(), progress)
+}
+
+/// [`time_split`], timed by `clock`.
+pub fn time_split_with(
+    world: &mut InteractionWorld,
+    steps: usize,
+    clock: &dyn Clock,
+    progress: &mut dyn FnMut(u64),
+) -> Result<StepTimes, BenchError> {
+    time_blocks(world, steps, clock, progress, &mut |_, _| Ok(()))
 }
 
 /// What [`time_blocks`] calls after each block: with its length and its
@@ -290,12 +322,13 @@ type AfterBlock<'a> = &'a mut dyn FnMut(usize, &[f64; 3]) -> Result<(), BenchErr
 fn time_blocks(
     world: &mut InteractionWorld,
     steps: usize,
+    clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
     after_block: AfterBlock,
 ) -> Result<StepTimes, BenchError> {
     let mut blocks = Vec::with_capacity(steps.div_ceil(BLOCK));
     for n in block_lengths(steps) {
-        let block = time_block(world, n)?;
+        let block = time_block(world, n, clock)?;
         after_block(n, &block)?;
         blocks.push(block);
         progress(n as u64);
@@ -312,8 +345,12 @@ fn block_lengths(steps: usize) -> impl Iterator<Item = usize> {
 
 /// Times `n` steps of `world` through the driver loop: µs per step,
 /// `[interaction layer, rapier, full]`.
-fn time_block(world: &mut InteractionWorld, n: usize) -> Result<[f64; 3], BenchError> {
-    let mut watch = Stopwatch::default();
+fn time_block(
+    world: &mut InteractionWorld,
+    n: usize,
+    clock: &dyn Clock,
+) -> Result<[f64; 3], BenchError> {
+    let mut watch = Stopwatch { clock, start: None, between: None, hands_ns: 0, rapier_ns: 0 };
     Driver::new(world).run(n, &mut [&mut watch])?;
     let per_step = |ns: u128| ns as f64 / n as f64 / 1e3;
     let (hands, rapier) = (watch.hands_ns, watch.rapier_ns);
@@ -326,32 +363,38 @@ fn medians(blocks: &[[f64; 3]]) -> StepTimes {
     StepTimes { interaction_us: median(0), rapier_us: median(1), full_us: median(2) }
 }
 
+/// The time from `start` (a reading of `clock`) to now; zero if the clock
+/// went back.
+fn elapsed(clock: &dyn Clock, start: Duration) -> Duration {
+    clock.now().saturating_sub(start)
+}
+
 /// Times each step's halves: the hand forces, from before the step to
 /// between its halves, and rapier's step, from there to after it.
-#[derive(Default)]
-struct Stopwatch {
-    start: Option<Instant>,
-    between: Option<Instant>,
+struct Stopwatch<'a> {
+    clock: &'a dyn Clock,
+    start: Option<Duration>,
+    between: Option<Duration>,
     hands_ns: u128,
     rapier_ns: u128,
 }
 
-impl Observer for Stopwatch {
+impl Observer for Stopwatch<'_> {
     fn before_step(&mut self, _: &mut InteractionWorld, _: f64) -> Result<(), RunError> {
-        self.start = Some(Instant::now());
+        self.start = Some(self.clock.now());
         Ok(())
     }
 
     fn after_hand_forces(&mut self, _: &mut InteractionWorld) -> Result<(), RunError> {
-        self.between = Some(Instant::now());
+        self.between = Some(self.clock.now());
         Ok(())
     }
 
     fn after_step(&mut self, _: &StepView) -> Result<(), RunError> {
-        let end = Instant::now();
+        let end = self.clock.now();
         if let (Some(start), Some(between)) = (self.start, self.between) {
-            self.hands_ns += (between - start).as_nanos();
-            self.rapier_ns += (end - between).as_nanos();
+            self.hands_ns += between.saturating_sub(start).as_nanos();
+            self.rapier_ns += end.saturating_sub(between).as_nanos();
         }
         Ok(())
     }

@@ -41,7 +41,7 @@
 //!
 //! Unknown fields are errors; every name, bound and key is checked before
 //! the run starts. The shipped scenarios are in `scenarios/` and built into
-//! the binary ([`shipped`]).
+//! the binary ([`shipped`]), with the files they name ([`shipped_files`]).
 
 #[cfg(all(test, target_arch = "x86_64"))]
 mod builds;
@@ -53,6 +53,7 @@ pub mod script;
 use super::RunError;
 use super::drive::{self, Driver, HandSource, Observer, RecordedHand};
 use crate::file_error::FileError;
+use crate::files::{FileSystem, Files};
 use crate::hand::rig::HandRig;
 use crate::hand::{HandSample, Side};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
@@ -92,6 +93,23 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
         "tilt-wooden",
         "throw",
     ]
+}
+
+/// The files the shipped scenarios name (the pawn's mesh), built in beside
+/// them: by their paths joined to the shipped scenarios' folder,
+/// `scenarios/` of the crate's source, as [`Scenario::find`] looks them up.
+/// Any other path is not found.
+pub fn shipped_files(path: &Path) -> std::io::Result<Vec<u8>> {
+    const FILES: [(&str, &[u8]); 1] =
+        [("../assets/meshes/pawn.obj", include_bytes!("../../../assets/meshes/pawn.obj"))];
+    let dir = shipped_dir();
+    let found = FILES.iter().find(|(name, _)| dir.join(name) == path);
+    found.map(|(_, bytes)| bytes.to_vec()).ok_or_else(crate::files::not_given)
+}
+
+/// The folder of the shipped scenarios: `scenarios/` of the crate's source.
+fn shipped_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios")
 }
 
 #[derive(Debug, Clone, serde::Deserialize)]
@@ -230,8 +248,8 @@ impl Scenario {
     pub fn find(name_or_file: &str) -> Result<Scenario, ScenarioError> {
         match shipped().iter().find(|(n, _)| *n == name_or_file) {
             Some((name, text)) => {
-                let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
-                Self::parse(&format!("scenarios/{name}.json"), text, &dir)
+                let file = format!("scenarios/{name}.json");
+                Self::parse_with(&file, text, &shipped_dir(), &shipped_files)
             }
             None => Self::load(Path::new(name_or_file)).map_err(|e| {
                 if Path::new(name_or_file).exists() {
@@ -259,15 +277,26 @@ impl Scenario {
     }
 
     /// Parses and checks a scenario; `dir` is where relative recording
-    /// paths start.
+    /// and mesh paths start.
     pub fn parse(file: &str, text: &str, dir: &Path) -> Result<Scenario, ScenarioError> {
+        Self::parse_with(file, text, dir, &FileSystem)
+    }
+
+    /// [`Self::parse`], the recordings and meshes it names read from
+    /// `files` ([`crate::files`]).
+    pub fn parse_with(
+        file: &str,
+        text: &str,
+        dir: &Path,
+        files: &dyn Files,
+    ) -> Result<Scenario, ScenarioError> {
         let fail = |reason: String| ScenarioError::new(file, reason);
         let entry: ScenarioEntry = ScenarioError::json(file, text)?;
         if !(entry.duration.is_finite() && entry.duration > 0.0) {
             let d = entry.duration;
             return Err(fail(format!("duration: must be a positive number of seconds, got {d}")));
         }
-        let scene = Scene::from_entry(file, entry.scene, dir)?;
+        let scene = Scene::from_entry(file, entry.scene, dir, files)?;
         let config = entry.config.with_scene(&scene);
         config.validate().map_err(|e| fail(e.to_string()))?;
         if entry.duration < config.dt {
@@ -279,7 +308,7 @@ impl Scenario {
             .hands
             .into_iter()
             .enumerate()
-            .map(|(i, h)| scenario_hand(h, dir).map_err(|e| fail(format!("hands[{i}].{e}"))))
+            .map(|(i, h)| scenario_hand(h, dir, files).map_err(|e| fail(format!("hands[{i}].{e}"))))
             .collect::<Result<Vec<_>, _>>()?;
         let names = scene.object_names();
         for (i, c) in entry.checks.iter().enumerate() {
@@ -357,7 +386,7 @@ fn auto_gamma_needs(scene: &Scene, config: &InteractionConfig) -> Result<(), Str
     Ok(())
 }
 
-fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
+fn scenario_hand(h: HandEntry, dir: &Path, files: &dyn Files) -> Result<ScenarioHand, HandError> {
     let field = |field, reason: &str| HandError::Field { field, reason: reason.to_string() };
     match (h.recording, h.keys.is_empty()) {
         (Some(_), false) => {
@@ -389,7 +418,7 @@ fn scenario_hand(h: HandEntry, dir: &Path) -> Result<ScenarioHand, HandError> {
             if !h.offset.is_finite() {
                 return Err(field("offset", &format!("must be finite, got {:?}", h.offset)));
             }
-            let recording = crate::input::recording::load(&dir.join(path))?;
+            let recording = crate::input::recording::load_from(&dir.join(path), files)?;
             let playback = recording.playback(h.offset, DEFAULT_GRACE)?;
             let track = match h.side {
                 None => 0,

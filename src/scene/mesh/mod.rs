@@ -9,6 +9,7 @@
 
 pub mod generate;
 
+use crate::files::{FileSystem, Files, NoFiles};
 use glam::Vec3;
 use std::path::Path;
 
@@ -109,9 +110,15 @@ impl TriangleMesh {
     /// Loads `.obj`, `.stl`, `.gltf` or `.glb` (all meshes of the file, in
     /// its units), then [`Self::check`]s it.
     pub fn load(path: &Path) -> Result<TriangleMesh, MeshError> {
+        Self::load_from(path, &FileSystem)
+    }
+
+    /// [`Self::load`], the file and a glTF's buffer files beside it read
+    /// from `files`.
+    pub fn load_from(path: &Path, files: &dyn Files) -> Result<TriangleMesh, MeshError> {
         let file = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| MeshError::new(&file, e.to_string()))?;
-        Self::parse(&file, &bytes, path.parent().unwrap_or(Path::new(".")))
+        let bytes = files.read(path).map_err(|e| MeshError::new(&file, e.to_string()))?;
+        Self::parse_with(&file, &bytes, path.parent().unwrap_or(Path::new(".")), files)
     }
 
     /// Parses the bytes of a mesh file in the format its name's extension
@@ -119,6 +126,23 @@ impl TriangleMesh {
     /// A glTF's external buffer files are read relative to `dir`; an OBJ's
     /// material libraries are not read.
     pub fn parse(file: &str, bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshError> {
+        Self::parse_with(file, bytes, dir, &FileSystem)
+    }
+
+    /// [`Self::parse`] of the file's bytes alone: a glTF's external buffer
+    /// files are errors (its data URIs and a GLB's own buffer are read).
+    pub fn from_bytes(file: &str, bytes: &[u8]) -> Result<TriangleMesh, MeshError> {
+        Self::parse_with(file, bytes, Path::new(""), &NoFiles)
+    }
+
+    /// [`Self::parse`], a glTF's external buffer files read from `files`
+    /// at their paths joined to `dir`.
+    pub fn parse_with(
+        file: &str,
+        bytes: &[u8],
+        dir: &Path,
+        files: &dyn Files,
+    ) -> Result<TriangleMesh, MeshError> {
         let fail = |problem: MeshProblem| MeshError::new(file, problem.to_string());
         let ext = Path::new(file)
             .extension()
@@ -128,7 +152,7 @@ impl TriangleMesh {
         let mesh = match ext.as_str() {
             "obj" => parse_obj(bytes),
             "stl" => parse_stl(bytes),
-            "gltf" | "glb" => parse_gltf(bytes, dir),
+            "gltf" | "glb" => parse_gltf(bytes, dir, files),
             other => return Err(fail(MeshProblem::UnknownFormat(other.to_string()))),
         }
         .map_err(fail)?;
@@ -322,8 +346,9 @@ fn parse_stl(bytes: &[u8]) -> Result<TriangleMesh, MeshProblem> {
 
 /// Every mesh primitive of the default scene (or of all root nodes), with
 /// the node transforms applied. Buffers may be the GLB's binary chunk,
-/// files in `dir` (next to the `.gltf`), or base64 data URIs.
-fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
+/// files in `dir` (next to the `.gltf`) read from `files`, or base64 data
+/// URIs.
+fn parse_gltf(bytes: &[u8], dir: &Path, files: &dyn Files) -> Result<TriangleMesh, MeshProblem> {
     use base64::Engine;
     // The gltf crate computes `length - 12` unchecked (a panic in debug builds).
     if let Some(length) = bytes.strip_prefix(b"glTF").and_then(|b| b.get(4..8)) {
@@ -365,7 +390,8 @@ fn parse_gltf(bytes: &[u8], dir: &Path) -> Result<TriangleMesh, MeshProblem> {
                         .decode(b64)
                         .map_err(|e| format!("buffer {}: {e}", buffer.index()))?
                 }
-                None => std::fs::read(dir.join(uri))
+                None => files
+                    .read(&dir.join(uri))
                     .map_err(|e| format!("buffer {} ({uri}): {e}", buffer.index()))?,
             },
         };
