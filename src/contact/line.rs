@@ -63,11 +63,11 @@ pub(crate) fn along_face(
     let height = |q: Vec3| (q - c).dot(n) - bone.radius;
     let (h0, h1) = (height(bone.a), height(bone.b));
     let level = (1.0 - PLANAR_COS * PLANAR_COS).sqrt() / PLANAR_COS;
-    if !(pad > 0.0)
-        || h0 > band
-        || h1 > band
-        || (h0 - h1).abs() > level * (bone.b - bone.a).length()
-    {
+    let lying = pad > 0.0
+        && h0 <= band
+        && h1 <= band
+        && (h0 - h1).abs() <= level * (bone.b - bone.a).length();
+    if !lying {
         return None;
     }
     let on_plane = |q: Vec3| q - (q - c).dot(n) * n;
@@ -98,7 +98,7 @@ pub(crate) fn along_face(
         *end = inside;
     }
     let half = 0.5 * (to - from).dot(along);
-    if !(half >= pad) {
+    if half.is_nan() || half < pad {
         return None;
     }
     // The pad's width across it, where every sample of the ellipse lies on

@@ -16,10 +16,12 @@ use std::path::Path;
 /// The file's format marker.
 pub const FORMAT: &str = "coulomb-hands-session/1";
 
+/// How a session written before a config field existed ran.
+type AsItRan = fn(&mut InteractionConfig);
+
 /// Config fields added since [`FORMAT`] began, as they appear in a session
 /// file, and how a session written before each ran.
-const FIELDS_ADDED: [(&str, fn(&mut InteractionConfig)); 1] =
-    [("\"line_contacts\"", |c| c.line_contacts = false)];
+const FIELDS_ADDED: [(&str, AsItRan); 1] = [("\"line_contacts\"", |c| c.line_contacts = false)];
 
 /// A recorded session.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
