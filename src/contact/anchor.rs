@@ -277,11 +277,8 @@ impl Anchor {
             }
             (None, _) => (pad, false, patch::sample_offsets(n, patch.samples, pad)),
         };
-        let rot_inv = bone_anchor.rotation(motion.now(), motion.palm_now()).inverse();
-        let samples = patch::Samples::from_pairs(offsets.into_iter().map(|o| {
-            let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
-            (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
-        }));
+        let samples =
+            lay_samples(offsets, c, bone_anchor.rotation(motion.now(), motion.palm_now()), object);
         Anchor {
             c_local: object.pose.inverse_transform_point(c),
             n_local: object.pose.rotation.inverse() * n,
@@ -375,12 +372,9 @@ impl Anchor {
     /// Whether every sample lies on the flat face of C (normal `n`), as a
     /// line's must.
     fn lies_flat(&self, c: Vec3, n: Vec3, object: &ObjectView) -> bool {
-        let (shape, pose) = (object.shape, &object.pose);
         (0..self.samples.len()).all(|i| {
-            let q = pose.transform_point(self.samples.object.get(i));
-            let on_plane = q - (q - c).dot(n) * n;
-            surface::face_cos(shape, pose, on_plane, n, self.pad)
-                .is_some_and(|cos| cos >= patch::PLANAR_COS)
+            let q = object.pose.transform_point(self.samples.object.get(i));
+            line::flat_under(object, q - (q - c).dot(n) * n, n, self.pad)
         })
     }
 
@@ -388,16 +382,22 @@ impl Anchor {
     /// its flat face becomes, since the face no longer holds it along the
     /// bone.
     fn lay_ring(&mut self, c: Vec3, n: Vec3, motion: &BoneMotion, object: &ObjectView) {
-        let (shape, pose) = (object.shape, &object.pose);
-        let rot_inv = self.bone.rotation(motion.now(), motion.palm_now()).inverse();
         let ring = patch::sample_offsets(n, self.samples.len(), self.pad);
-        self.samples = patch::Samples::from_pairs(ring.into_iter().map(|o| {
-            let ci = surface::project_to_surface(shape, pose, c + o);
-            (pose.inverse_transform_point(ci), rot_inv * (ci - c))
-        }));
+        let skin = self.bone.rotation(motion.now(), motion.palm_now());
+        self.samples = lay_samples(ring, c, skin, object);
         self.radius = self.pad;
         self.rigid = false;
     }
+}
+
+/// A patch's samples at `offsets` from C (world), each on the object's
+/// surface, with its skin offset in the skin frame `skin`.
+fn lay_samples(offsets: Vec<Vec3>, c: Vec3, skin: Quat, object: &ObjectView) -> patch::Samples {
+    let rot_inv = skin.inverse();
+    patch::Samples::from_pairs(offsets.into_iter().map(|o| {
+        let ci = surface::project_to_surface(object.shape, &object.pose, c + o);
+        (object.pose.inverse_transform_point(ci), rot_inv * (ci - c))
+    }))
 }
 
 #[cfg(test)]

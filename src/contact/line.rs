@@ -78,10 +78,7 @@ pub(crate) fn along_face(
     }
     // Each end drawn towards the other until the face under it is flat: a
     // bone longer than the face must not hold the object beyond its edge.
-    let on_face = |q: Vec3| {
-        surface::face_cos(object.shape, &object.pose, q, n, pad)
-            .is_some_and(|cos| cos >= PLANAR_COS)
-    };
+    let on_face = |q: Vec3| flat_under(object, q, n, pad);
     let anchor_point = on_plane(bone.axis_point(bone.closest_parameter(c)));
     if !on_face(anchor_point) {
         return None;
@@ -109,6 +106,13 @@ pub(crate) fn along_face(
         line.across = 0.0;
     }
     Some(line)
+}
+
+/// Whether the object's surface under `q`, a point of C's tangent plane
+/// (normal `n`), is there within `depth` (m) and as flat as at C (2.6°): where
+/// a line may lie.
+pub(crate) fn flat_under(object: &ObjectView, q: Vec3, n: Vec3, depth: f32) -> bool {
+    surface::face_cos(object.shape, &object.pose, q, n, depth).is_some_and(|cos| cos >= PLANAR_COS)
 }
 
 /// The patch's sample offsets from the line's middle, where its contact
