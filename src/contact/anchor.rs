@@ -35,6 +35,10 @@ pub(crate) struct Anchor {
     /// matrix, and the mark of the hand pose it came from
     /// ([`super::BoneMotion::marks`]).
     pub skin: Option<(u64, Mat3)>,
+    /// The object's spin (rad/s, world) that this step's roll took up
+    /// ([`Self::roll`], `roll.rs`): it moved the patch with C, so the
+    /// patch's dampers must not resist it. Zero when nothing rolled.
+    pub rolled: Vec3,
 }
 
 /// The material point of the bone that the contact holds on to.
@@ -67,7 +71,7 @@ pub(crate) struct Site {
 
 impl BoneAnchor {
     /// The bone's material point that presses at C (normal `n`).
-    fn at(bone: &BoneShape, palm: &Palm, c: Vec3, n: Vec3) -> BoneAnchor {
+    pub(super) fn at(bone: &BoneShape, palm: &Palm, c: Vec3, n: Vec3) -> BoneAnchor {
         match bone {
             BoneShape::Capsule(cap) => {
                 let dir = palm.rotation.inverse() * (cap.b - cap.a).normalize_or_zero();
@@ -109,7 +113,7 @@ impl BoneAnchor {
 
     /// The anchored point p on the bone's surface, for a contact normal `n`.
     #[inline]
-    fn point(self, bone: BoneShape, n: Vec3) -> Vec3 {
+    pub(super) fn point(self, bone: BoneShape, n: Vec3) -> Vec3 {
         match (self, bone) {
             (BoneAnchor::Capsule { s, .. }, BoneShape::Capsule(c)) => {
                 c.axis_point(s) - c.radius * n
@@ -289,6 +293,7 @@ impl Anchor {
             rigid,
             limited_depth: 0.0,
             skin: None,
+            rolled: Vec3::ZERO,
         }
     }
 

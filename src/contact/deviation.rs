@@ -45,13 +45,13 @@ pub(super) struct Head {
 
 impl Springs {
     #[inline(always)]
-    fn new(step: &PatchStep, object: &ObjectView) -> Springs {
+    fn new(step: &PatchStep) -> Springs {
         let rocking = step.rocking;
         let limit = f32x4::splat(step.normal_force / rocking.stiffness);
         Springs {
             c: lanes::splat(step.center),
             n: lanes::splat(step.normal),
-            angvel: lanes::splat(object.angvel),
+            angvel: lanes::splat(step.spin),
             skin_rot: lanes::splat_mat(&step.skin),
             skin_rate: lanes::splat_mat(&step.skin_rate),
             clamped: rocking.clamped,
@@ -109,7 +109,7 @@ pub(super) fn deviate(
     object: &ObjectView,
     scratch: &mut PatchScratch,
 ) {
-    let springs = Springs::new(step, object);
+    let springs = Springs::new(step);
     let chunks = samples.object.chunks().len();
     let mut j = 0;
     #[cfg(target_arch = "x86_64")]

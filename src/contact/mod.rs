@@ -38,6 +38,7 @@ pub mod event;
 pub(crate) mod lanes;
 mod line;
 pub mod patch;
+mod roll;
 pub mod surface;
 #[cfg(target_arch = "x86_64")]
 mod wide8;
@@ -181,6 +182,8 @@ pub(crate) struct LawSettings {
     /// How near a face (m) a bone lying along it touches it, for line
     /// contacts (`line.rs`): the contact offset; `None` without them.
     pub line_band: Option<f32>,
+    /// Contacts follow the surfaces as they roll (`roll.rs`).
+    pub rolling: bool,
 }
 
 /// How a contact presses this step, before any force: where its anchors
@@ -407,6 +410,7 @@ impl Contact {
             mu: object.mu,
             rocking,
             deviation_springs: settings.deviation_springs,
+            spin: object.angvel - anchor.rolled,
         };
         self.anchor.skin = Some((now, skin));
         patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);

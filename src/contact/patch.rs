@@ -253,6 +253,9 @@ pub(crate) struct PatchStep {
     pub rocking: Rocking,
     /// Whether the samples' deviation springs act (off: `f/N` each).
     pub deviation_springs: bool,
+    /// The object's spin that moves the samples against the skin (rad/s):
+    /// its angular velocity, less what a roll took up (`Anchor::rolled`).
+    pub spin: Vec3,
 }
 
 /// Buffers reused from step to step.

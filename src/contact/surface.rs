@@ -119,8 +119,20 @@ pub(crate) const SAME_FACE_COS: f32 = 0.866;
 /// `depth` (m) of the plane. A point beyond an edge finds a side face
 /// (a small cosine), another part of the object, or nothing.
 pub fn face_cos(shape: &dyn Shape, pose: &Pose, q: Vec3, n: Vec3, depth: f32) -> Option<f32> {
+    surface_below(shape, pose, q, n, depth).map(|hit| hit.normal.dot(n))
+}
+
+/// The object's surface straight below `q`, a point of C's tangent plane
+/// (normal `n`), if it is there within `depth` (m) of the plane.
+pub(crate) fn surface_below(
+    shape: &dyn Shape,
+    pose: &Pose,
+    q: Vec3,
+    n: Vec3,
+    depth: f32,
+) -> Option<SurfacePoint> {
     let lift = depth.max(1.0e-4);
-    cast(shape, pose, q + lift * n, -n, 2.0 * lift, n).map(|hit| hit.normal.dot(n))
+    cast(shape, pose, q + lift * n, -n, 2.0 * lift, n)
 }
 
 /// The closest surface point of the object to `q` (world).

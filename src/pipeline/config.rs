@@ -130,6 +130,13 @@ pub struct InteractionConfig {
     /// object upright as a small flat support does (`contact/line.rs`).
     /// Off, every finger patch is the pad's ring, as in the thesis.
     pub line_contacts: bool,
+    /// A contact on a curved object follows the two surfaces as they roll
+    /// on each other (`contact/roll.rs`), so a ball rolls down a palm with
+    /// its true depth at every step. Off (default, and the thesis's), C
+    /// stays pinned to the object while it sticks: a grip wrapped round a
+    /// handle keeps its hold only through the skin's wrap, which the
+    /// rolling patch does not yet resist (the book's "Rolling contacts").
+    pub rolling: bool,
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.
     pub stability_limit: bool,
@@ -192,6 +199,7 @@ impl Default for InteractionConfig {
             deviation_springs: true,
             slip_recentre: true,
             line_contacts: true,
+            rolling: false,
             stability_limit: true,
             virtual_fingers: true,
             grab: None,

@@ -46,7 +46,8 @@ impl Method {
     /// offset, no stability limit, the patch's samples carrying `f/N` each
     /// (no deviation springs), slipping C moved from where it is rather
     /// than re-centred under the bone, every finger patch the pad's ring (no
-    /// line contacts), and the tracked hand acting as it is
+    /// line contacts), C pinned to the object while it sticks (no rolling),
+    /// and the tracked hand acting as it is
     /// tracked, jitter and all. One difference remains: `p`
     /// is the bone's surface point, not the phalanx centroid (see
     /// `contact/mod.rs`, "Which bone point is p"): with the centroid, the
@@ -67,6 +68,7 @@ impl Method {
                 deviation_springs: false,
                 slip_recentre: false,
                 line_contacts: false,
+                rolling: false,
                 tracking: None,
                 ..base
             },

@@ -20,7 +20,8 @@ impl InteractionWorld {
         // through a helper taking a closure: the closure is left out of
         // line, in the baseline build (+13 % on the layer, measured).
         let mut contacts = std::mem::take(&mut self.contacts);
-        let mut keep = |contact: &Contact| {
+        let (rolling, dt) = (step.settings.rolling, step.settings.dt);
+        let mut keep = |contact: &mut Contact| {
             let reseat = self.objects[contact.object.0 as usize].reseat;
             let motion = self.motion(contact.hand, contact.bone).filter(|_| !reseat);
             let Some(motion) = motion else {
@@ -37,12 +38,20 @@ impl InteractionWorld {
                 };
                 Some(prox)
             };
+            if rolling {
+                let object = self.object_view(contact.object.0 as usize, StabilityScale::NONE);
+                match contact.state {
+                    FrictionState::Static => contact.anchor.roll(&motion, &object, dt),
+                    FrictionState::Dynamic => contact.anchor.slide_spin(&motion, &object, dt),
+                    _ => contact.anchor.rolled = glam::Vec3::ZERO,
+                }
+            }
             step.kept.push(Kept { proximity });
             true
         };
         let mut live = 0;
         for i in 0..contacts.len() {
-            if keep(&contacts[i]) {
+            if keep(&mut contacts[i]) {
                 if live != i {
                     contacts.swap(live, i);
                 }

@@ -273,6 +273,7 @@ impl StepScratch {
             deviation_springs: config.deviation_springs,
             recentre: config.slip_recentre,
             line_band: config.line_contacts.then_some(config.contact_offset),
+            rolling: config.rolling,
         };
         StepScratch { detector, settings, ..StepScratch::default() }
     }

@@ -118,6 +118,7 @@ class Config:
     deviation_springs: bool
     slip_recentre: bool
     line_contacts: bool
+    rolling: bool
     stability_limit: bool
     grab: Optional[str]
     hand_friction: bool
