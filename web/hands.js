@@ -1,6 +1,6 @@
 // The thesis's visuals (§3.6): each hand as its 16 bones (a palm box and 15 capsules), drawn
-// semi-transparent until it presses on an object and opaque while it does; red arrows for the
-// contacts' forces on the objects and yellow ones for the hand's motion.
+// semi-transparent, and opaque while it touches an object; red arrows for the contacts' forces
+// on the objects and yellow ones for the hand's motion (its palm and fingertips).
 import * as THREE from 'three';
 
 export const SKIN = 0xe0896b;

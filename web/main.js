@@ -53,12 +53,16 @@ const app = {
   errors: [],
   xr: null,
   frames: 0,
-  // The WebXR joints last given to the world, per side (for tests and the HUD).
+  // The WebXR joints last given to the world, per side: positions, and all three arrays as
+  // given (for the tests and the benchmark).
   joints: {},
+  jointArrays: {},
 };
 window.app = app;
 
 await init();
+// The module itself, for the benchmark (web/bench/bench.mjs).
+app.wasm = wasm;
 const POSE = wasm.poseStride();
 const STATE = wasm.stateStride();
 const CONTACT = wasm.contactStride();
@@ -100,9 +104,8 @@ resize();
 let drawn = { objects: [], statics: null, hands: new Map(), previous: new Map() };
 let mouse = null;
 
-function objectMaterial(name, index) {
-  const known = Object.keys(MATERIAL_COLORS);
-  const color = MATERIAL_COLORS[name] ?? MATERIAL_COLORS[known[index % known.length]];
+function objectMaterial(name) {
+  const color = MATERIAL_COLORS[name] ?? MATERIAL_COLORS.wood;
   return new THREE.MeshStandardMaterial({ color, roughness: 0.6 });
 }
 
@@ -120,15 +123,23 @@ function clearDrawn() {
   drawn = { objects: [], statics: null, hands: new Map(), previous: new Map() };
 }
 
-function drawWorld(world, materials) {
-  clearDrawn();
+// Meshes for the objects not drawn yet: all at first, then those a run adds (a recording's
+// object at each closing).
+function drawObjects(world) {
+  const count = world.objectCount();
+  if (drawn.objects.length === count) return;
   const names = world.objectNames();
-  for (let id = 0; id < world.objectCount(); id++) {
-    const mesh = new THREE.Mesh(geometry(world.objectMesh(id)), objectMaterial(materials[id], id));
+  for (let id = drawn.objects.length; id < count; id++) {
+    const mesh = new THREE.Mesh(geometry(world.objectMesh(id)), objectMaterial(materialOf(names[id])));
     mesh.name = names[id];
     root.add(mesh);
     drawn.objects.push(mesh);
   }
+}
+
+function drawWorld(world) {
+  clearDrawn();
+  drawObjects(world);
   const statics = world.staticMesh();
   if (statics.length) {
     drawn.statics = new THREE.Mesh(geometry(statics),
@@ -191,14 +202,16 @@ async function worldOfFile(file) {
   return wasm.World.recording(name, bytes, wasm.closingObject());
 }
 
-function materialsOf(world) {
-  // Colours by the material each object was made of, when its name says it (the desk's do).
-  return world.objectNames().map((name) => ({ cube: 'wood', ball: 'rubber', block: 'wood',
-    can: 'aluminium' })[name] ?? 'wood');
+// Colours by the material an object is made of, where its name says it (the desk's do).
+function materialOf(name) {
+  return { ball: 'rubber', can: 'aluminium' }[name] ?? 'wood';
 }
 
 function placeCamera(mode) {
-  if (mode === 'desk') {
+  if (mode === 'recording') {
+    camera.position.set(0.3, 0.36, 0.45);
+    controls.target.set(0.04, 0.14, 0);
+  } else if (mode === 'desk') {
     camera.position.set(0.05, 0.38, -0.62);
     controls.target.set(0, 0.04, 0.02);
   } else {
@@ -229,7 +242,7 @@ async function load(mode, file = null) {
     mouse = new MouseHand(world, world.addHand('right'), camera, canvas);
   }
   if (app.xr) app.xr.attach(world);
-  drawWorld(world, materialsOf(world));
+  drawWorld(world);
   if (!app.xr) placeCamera(mode);
   reportBox.textContent = '';
   document.title = `coulomb-hands: ${app.mode}`;
@@ -309,6 +322,7 @@ function finish(world) {
 }
 
 function draw(world, seconds) {
+  drawObjects(world);
   const states = world.objectStates();
   for (let id = 0; id < drawn.objects.length; id++) {
     const s = states.subarray(STATE * id, STATE * (id + 1));
@@ -316,11 +330,12 @@ function draw(world, seconds) {
     drawn.objects[id].quaternion.set(s[3], s[4], s[5], s[6]);
   }
   const contacts = world.contacts();
-  const pressing = new Set();
+  // Each hand is drawn opaque exactly while it has contacts, as the viewer draws it (§3.6).
+  const touching = new Set();
   forces.begin();
   for (let k = 0; k < contacts.length; k += CONTACT) {
     const c = contacts.subarray(k, k + CONTACT);
-    if (c[17] > 0) pressing.add(c[1]);
+    touching.add(c[1]);
     forces.add([c[4], c[5], c[6]], [c[13], c[14], c[15]], FORCE_SCALE);
   }
   forces.end();
@@ -338,7 +353,7 @@ function draw(world, seconds) {
       continue;
     }
     view.update(pose);
-    view.setOpaque(pressing.has(hand));
+    view.setOpaque(touching.has(hand));
     const points = HandView.points(pose);
     const before = drawn.previous.get(hand);
     if (before && seconds > 0) {
@@ -354,7 +369,7 @@ function draw(world, seconds) {
   status.textContent = `${app.mode}${app.xr ? ` (${app.xr.mode})` : ''}\n`
     + `t = ${world.time.toFixed(3)} s${duration ? ` of ${duration.toFixed(2)}` : ''}, `
     + `${world.steps} steps of ${(world.dt * 1000).toFixed(1)} ms\n`
-    + `contacts ${contacts.length / CONTACT}, hands pressing ${pressing.size}`
+    + `contacts ${contacts.length / CONTACT}, hands touching ${touching.size}`
     + (app.paused ? '\npaused' : '');
 }
 

@@ -70,6 +70,8 @@ export class XrHands {
       world.setHandWebxr(this.hands[side], this.positions, this.radii, this.orientations);
       seen[side] = true;
       window.app.joints[side] = Array.from(this.positions);
+      window.app.jointArrays[side] = [this.positions, this.radii, this.orientations].map(
+        (a) => a.slice());
     }
     for (const side of ['left', 'right']) {
       if (!seen[side] && this.tracked[side]) world.clearHand(this.hands[side]);

@@ -1,8 +1,10 @@
 // Headless Chromium loads the page and runs the demo and the grasp-lift scenario through its
 // own frame loop; their traces (every 250 steps, the objects' states and the contacts, bit for
 // bit) must equal the native library's (`examples/reference.rs` of crates/coulomb-hands-web,
-// built with enhanced-determinism, as the page is), and the scenario's report too. Then a
-// malformed scene shows its error and the page keeps running.
+// built with enhanced-determinism, as the page is), and the scenario's report too. Every
+// shipped scenario, chosen in the page, reports as natively (and passes), and the bundled
+// recording's closings get the native verdicts. Then a malformed scene shows its error and
+// the page keeps running.
 //
 //   node web/tests/page.mjs REFERENCE.json
 import fs from 'node:fs/promises';
@@ -30,6 +32,26 @@ try {
       check(got.report === expected.report, `${run}: the report equals the native one`);
       check(JSON.parse(got.report).passed, `${run}: its checks pass`);
     }
+    await page.close();
+  }
+  // Every shipped scenario and the recording, one after another as a user picks them.
+  {
+    const { page, console } = await open(browser, server.url, '?run=desk&fast');
+    for (const name of [...Object.keys(reference.reports), 'recording']) {
+      await page.select('#mode', name);
+      await page.waitForFunction((n) => window.app.mode === n && window.app.done, { timeout: 300_000 }, name);
+      const got = await page.evaluate(() => ({ report: window.app.world.report(),
+        verdicts: window.app.world.verdicts(), steps: window.app.world.steps, shown: document.getElementById('report').textContent }));
+      if (name === 'recording') {
+        check(got.steps === reference.recording.steps && got.verdicts === reference.recording.verdicts,
+          `the recording: ${got.steps} steps, its ${JSON.parse(got.verdicts).length} closings' verdicts as natively`);
+        check(got.shown.includes('closing-1'), 'the verdicts shown on the page');
+      } else {
+        check(got.report === reference.reports[name] && JSON.parse(got.report).passed,
+          `${name}: the native report, passed`);
+      }
+    }
+    check(console.length === 0, `no console errors (${console})`);
     await page.close();
   }
   // Bad input: the library's message on the page and in the console, and the page runs on.

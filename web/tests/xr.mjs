@@ -10,33 +10,27 @@ import path from 'node:path';
 import fs from 'node:fs/promises';
 import { serve, browser as launch, open, check } from './browser.mjs';
 import { colours } from './pixels.mjs';
-import * as THREE from 'three';
+import { enterVr, object, simulate, aimPinch, pinch } from './emulated.mjs';
 
 const shots = process.argv[2] ?? path.join(process.cwd(), 'target', 'web-screenshots');
 await fs.mkdir(shots, { recursive: true });
 const server = await serve();
 const browser = await launch();
 
-// The page's cube (id 0, the desk's first object) and whether a hand presses it.
-const cube = (page) => page.evaluate(() => {
-  const world = window.app.world;
-  const s = world.objectStates();
-  const c = world.contacts();
-  let pressing = 0;
-  for (let k = 0; k < c.length; k += 18) if (c[k] === 0 && c[k + 17] > 0) pressing++;
-  return { y: s[1], x: s[0], z: s[2], pressing, time: world.time };
-});
-
-// Waits `seconds` of the page's simulated time.
-async function simulate(page, seconds) {
-  const start = await page.evaluate(() => window.app.world.time);
-  await page.waitForFunction((t) => window.app.world.time >= t, { timeout: 120_000 }, start + seconds);
-}
+const cube = (page) => object(page, 0);
 
 try {
   // The desk page with the mouse-driven hand closed over the cube, and its screenshot.
   {
     const { page } = await open(browser, server.url, '?run=desk');
+    // The keys drive the hand: R lifts it, D moves it sideways.
+    const palm = () => page.evaluate(() => Array.from(window.app.world.handPose(0).slice(0, 3)));
+    const start = await palm();
+    await page.keyboard.down('KeyR');
+    await simulate(page, 0.5);
+    await page.keyboard.up('KeyR');
+    const lifted = await palm();
+    check(lifted[1] - start[1] > 0.03, `R lifts the desk's hand (${(100 * (lifted[1] - start[1])).toFixed(1)} cm)`);
     await page.evaluate(() => window.app.mouseHand().set({ palm: [0, 0.07, -0.06], curl: 0.3 }));
     await simulate(page, 0.3);
     const file = path.join(shots, 'desk.png');
@@ -54,76 +48,18 @@ try {
   }
 
   const { page } = await open(browser, server.url, '?run=desk');
-  await page.addScriptTag({ type: 'module', content: `
-    import { XRDevice, metaQuest3 } from '/node_modules/iwer/build/iwer.module.js';
-    const device = new XRDevice(metaQuest3);
-    device.primaryInputMode = 'hand';
-    device.installRuntime({ forceInstall: true });
-    // The head 40 cm behind and above the desk, looking down at it.
-    device.position.set(0, 1.3, 0.05);
-    window.device = device;` });
-  await page.waitForFunction(() => window.device);
-  await page.evaluate((q) => window.device.quaternion.set(...q),
-    new THREE.Quaternion().setFromEuler(new THREE.Euler(-0.75, 0, 0)).toArray());
-  await page.evaluate(() => window.app.enter('immersive-vr'));
-  const entered = await page.evaluate(() => ({ xr: window.app.xr && window.app.xr.mode,
-    presenting: window.app.xr && window.app.xr.renderer.xr.isPresenting, errors: window.app.errors }));
-  check(entered.xr === 'immersive-vr' && entered.presenting, `the page entered immersive-vr (${entered.errors})`);
-
-  // The left hand out of the way; the right hand's pinch (between its thumb and index tips)
-  // brought to the cube's middle, from the side, its thumb and finger level.
-  await page.evaluate(() => {
-    const { left, right } = window.device.hands;
-    left.position.set(-0.5, 1.6, 0.2);
-    right.position.set(0.15, 1.0, -0.3);
-    right.quaternion.set(0, 0, 0, 1);
-  });
-  await simulate(page, 0.2);
-  const tips = () => page.evaluate(() => {
-    const j = window.app.joints.right;
-    return j && { thumb: j.slice(12, 15), index: j.slice(27, 30) };
-  });
-  // How far apart iwer's pinch value puts the thumb and index tips.
-  const pinchTo = async (value) => {
-    await page.evaluate((v) => window.device.hands.right.updatePinchValue(v), value);
-    await simulate(page, 0.2);
-    const t = await tips();
-    const gap = Math.hypot(...t.index.map((v, k) => v - t.thumb[k]));
-    return { ...t, gap, middle: t.thumb.map((v, k) => (v + t.index[k]) / 2) };
-  };
-  check((await tips()) !== null, 'the emulated right hand is tracked');
-  const apart = (await pinchTo(0)).gap;
-  const closed = (await pinchTo(1)).gap;
-  // The pinch that brings the tips 4 mm into each side of the 4 cm cube, as the demo's pads
-  // squeeze (the gap closes about linearly with the pinch value).
-  const squeeze = (apart - (0.04 - 0.008)) / (apart - closed);
-  // Turn the hand so that its tips close on each other level at that pinch, then put the
-  // point between them at the cube's middle, and open.
-  let t = await pinchTo(squeeze);
-  const across = new THREE.Vector3(...t.index).sub(new THREE.Vector3(...t.thumb)).normalize();
-  const level = new THREE.Vector3(across.x, 0, across.z).normalize();
-  const turn = new THREE.Quaternion().setFromUnitVectors(across, level);
-  await page.evaluate((q) => window.device.hands.right.quaternion.set(...q), turn.toArray());
-  t = await pinchTo(squeeze);
-  check(Math.abs(t.index[1] - t.thumb[1]) < 0.005,
-    `at the pinch, the tips level and ${(1000 * t.gap).toFixed(1)} mm apart`);
-  const meet = t.middle;
-  await pinchTo(0);
-  const state0 = await cube(page);
-  const target = [state0.x, state0.y + 0.004, state0.z];
-  await page.evaluate((d) => {
-    const p = window.device.hands.right.position;
-    p.set(p.x + d[0], p.y + d[1], p.z + d[2]);
-  }, target.map((v, k) => v - meet[k]));
-  await simulate(page, 0.2);
+  const entered = await enterVr(page);
+  check(entered.mode === 'immersive-vr' && entered.presenting,
+    `the page entered immersive-vr (${entered.errors})`);
+  // The left hand out of the way; the right hand's pinch brought to the cube's middle, from
+  // the side, its thumb and finger level.
+  await page.evaluate(() => window.device.hands.left.position.set(-0.5, 1.6, 0.2));
+  const squeeze = await aimPinch(page, 'right', 0, 0.04, [0.15, 1.0, -0.3]);
   const before = await cube(page);
-  check(before.pressing === 0 && Math.abs(before.y - state0.y) < 0.003,
+  check(before.pressing === 0 && Math.abs(before.y - 0.02) < 0.003,
     `open, the hand around the cube does not move it (y ${before.y.toFixed(4)})`);
   // Pinch over 0.4 s, hold, lift 12 cm over 1 s.
-  for (let k = 1; k <= 8; k++) {
-    await page.evaluate((v) => window.device.hands.right.updatePinchValue(v), squeeze * k / 8);
-    await simulate(page, 0.05);
-  }
+  await pinch(page, 'right', squeeze);
   await simulate(page, 0.3);
   const gripped = await cube(page);
   for (let k = 1; k <= 20; k++) {
