@@ -145,6 +145,8 @@ function drawWorld(world) {
     drawn.statics = new THREE.Mesh(geometry(statics),
       new THREE.MeshStandardMaterial({ color: 0x5d636e, roughness: 0.95, transparent: true,
         opacity: 1 }));
+    // Over the room (AR) the desk's ground is left undrawn; it stays in the physics.
+    drawn.statics.visible = !(app.xr && app.xr.mode === 'immersive-ar');
     root.add(drawn.statics);
   }
 }
@@ -401,6 +403,7 @@ async function enter(mode) {
     modeSelect.value = 'desk';
     await load('desk');
     root.position.copy(XR_DESK);
+    // Over the room (AR): no backdrop.
     if (mode === 'immersive-ar') scene.background = null;
     session.addEventListener('end', () => {
       app.xr = null;

@@ -67,6 +67,14 @@ try {
   check(!shown.loaded && shown.text.startsWith('broken-scene.json'), `a bad scene's error is shown: ${shown.text}`);
   check(console.some((m) => m.includes('broken-scene.json')), 'and in the console');
   check(shown.mode === 'desk' && shown.moved, 'the desk keeps running');
+  // A broken mesh and a broken recording: the same.
+  for (const [name, content] of [['broken.obj', 'v 1 2\nf 1 2 3\n'], ['broken.json.lz', 'not lz']]) {
+    const got = await page.evaluate(async (name, content) => {
+      const loaded = await window.app.load('desk', new File([content], name));
+      return { loaded, text: document.getElementById('error').textContent, mode: window.app.mode };
+    }, name, content);
+    check(!got.loaded && got.text.startsWith(name) && got.mode === 'desk', `${name}: ${got.text}`);
+  }
   await page.close();
 } finally {
   await browser.close();

@@ -44,6 +44,19 @@ try {
       mode: window.app.mode, xr: Boolean(window.app.xr) }));
     check(/Enter VR: .*staying on the desk/.test(refused.text) && refused.mode === 'desk' && !refused.xr,
       `without WebXR, the page says so: ${refused.text}`);
+    // A browser that refuses the session (or hand tracking): the same.
+    await page.evaluate(() => Object.defineProperty(navigator, 'xr', { configurable: true, value: {
+      isSessionSupported: async () => true,
+      requestSession: async () => {
+        throw new DOMException('hand-tracking was refused', 'NotSupportedError');
+      },
+    } }));
+    await page.evaluate(() => window.app.enter('immersive-vr'));
+    const denied = await page.evaluate(() => ({ text: document.getElementById('error').textContent,
+      mode: window.app.mode, xr: Boolean(window.app.xr), steps: window.app.world.steps }));
+    await simulate(page, 0.1);
+    check(denied.text.includes('hand-tracking was refused') && denied.mode === 'desk' && !denied.xr,
+      `refused, the page says so and stays on the desk: ${denied.text}`);
     await page.close();
   }
 
