@@ -6,8 +6,8 @@ import { check } from './browser.mjs';
 
 
 /** Installs the emulated headset, its head above and behind the desk, looking down at it, and
- * enters an immersive-vr session through the page's own Enter VR. */
-export async function enterVr(page) {
+ * enters an immersive session (`mode`) through the page's own Enter VR (or AR). */
+export async function enterVr(page, mode = 'immersive-vr') {
   await page.addScriptTag({ type: 'module', content: `
     import { XRDevice, metaQuest3 } from '/node_modules/iwer/build/iwer.module.js';
     const device = new XRDevice(metaQuest3);
@@ -18,7 +18,7 @@ export async function enterVr(page) {
   await page.waitForFunction(() => window.device);
   await page.evaluate((q) => window.device.quaternion.set(...q),
     new THREE.Quaternion().setFromEuler(new THREE.Euler(-0.75, 0, 0)).toArray());
-  await page.evaluate(() => window.app.enter('immersive-vr'));
+  await page.evaluate((mode) => window.app.enter(mode), mode);
   return page.evaluate(() => ({ mode: window.app.xr && window.app.xr.mode,
     presenting: Boolean(window.app.xr && window.app.xr.renderer.xr.isPresenting),
     errors: window.app.errors }));

@@ -3,7 +3,8 @@
 // right hand pinches the desk's cube, lifts it and opens. The cube must be held (lifted with
 // the hand, pressed by it), then released (no contact presses it) and fall back to the desk.
 // Screenshots of the desk page and of the immersive view are checked for the hand's skin and
-// the cube's wood. Without WebXR, Enter VR says so and the page stays on the desk.
+// the cube's wood. Without WebXR, or with the session refused, Enter VR says so and the page
+// stays on the desk; Enter AR enters immersive-ar.
 //
 //   node web/tests/xr.mjs [SCREENSHOT_DIR]
 import path from 'node:path';
@@ -104,6 +105,17 @@ try {
   const errors = await page.evaluate(() => window.app.errors);
   check(errors.length === 0, `no errors on the page (${errors})`);
   await page.close();
+  // Enter AR: the same desk and hands over the room, its backdrop and ground not drawn.
+  {
+    const { page: ar } = await open(browser, server.url, '?run=desk');
+    const inAr = await enterVr(ar, 'immersive-ar');
+    await simulate(ar, 0.2);
+    const state = await ar.evaluate(() => ({ hands: window.app.world.handCount(),
+      mode: window.app.mode, errors: window.app.errors }));
+    check(inAr.mode === 'immersive-ar' && inAr.presenting && state.mode === 'desk' && state.hands === 2,
+      `the page entered immersive-ar on the desk with both hands (${state.errors})`);
+    await ar.close();
+  }
 } finally {
   await browser.close();
   server.close();
