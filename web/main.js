@@ -235,6 +235,7 @@ async function load(mode, file = null) {
   if (app.world) app.world.free();
   app.world = world;
   app.mode = file ? file.name : mode;
+  app.source = { mode, file };
   app.done = false;
   app.trace = [];
   app.accumulated = 0;
@@ -312,12 +313,7 @@ function finish(world) {
     }
   }
   if (verdicts) {
-    lines.push(`${verdicts.length} closings:`);
-    for (const v of verdicts) {
-      const held = v.hold === 'held' || v.hold === 'judged' ? v.hold : v.hold;
-      lines.push(`  ${v.object} (hand ${v.hand}) at ${v.closing_at.toFixed(2)} s: ${held}`
-        + (v.released === null || v.released === undefined ? '' : `, released ${v.released}`));
-    }
+    lines.push(`${verdicts.length} closings:`, ...world.verdictLines());
   }
   reportBox.textContent = lines.join('\n');
   document.title = `coulomb-hands: ${app.mode} done`;
@@ -382,7 +378,7 @@ modeSelect.addEventListener('change', () => {
 });
 document.getElementById('restart').addEventListener('click', () => {
   clearError();
-  load(modeSelect.value);
+  load(app.source.mode, app.source.file);
 });
 document.getElementById('pause').addEventListener('click', () => {
   app.paused = !app.paused;

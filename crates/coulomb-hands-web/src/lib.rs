@@ -172,6 +172,12 @@ impl World {
         self.sim.verdicts_json()
     }
 
+    /// A recording's closings' verdicts, one line each as `coulomb-hands replay` prints them.
+    #[wasm_bindgen(js_name = verdictLines)]
+    pub fn verdict_lines(&self) -> Vec<String> {
+        self.sim.verdict_lines()
+    }
+
     /// A hand, `left` or `right`, untracked until posed; returns its id.
     #[wasm_bindgen(js_name = addHand)]
     pub fn add_hand(&mut self, side: &str) -> Result<u32, JsError> {

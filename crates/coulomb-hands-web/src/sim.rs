@@ -270,6 +270,17 @@ impl Sim {
         serde_json::to_string(&verdicts).unwrap_or_else(|_| "null".into())
     }
 
+    /// A recording's closings' verdicts so far, one line each as `coulomb-hands replay`
+    /// prints them; empty without closings.
+    pub fn verdict_lines(&self) -> Vec<String> {
+        match &self.script {
+            Script::Recording { closings: Some(c) } => {
+                c.verdicts().iter().map(ToString::to_string).collect()
+            }
+            _ => Vec::new(),
+        }
+    }
+
     fn hand(&self, hand: u32) -> Result<Side, Error> {
         let id = HandId(hand);
         self.world().hand_side(id).ok_or_else(|| WorldError::NoSuchHand(id).to_string())

@@ -58,6 +58,8 @@ fn a_recording_is_replayed_with_its_closings_verdicts_as_replay_gives_them() {
     let expected = serde_json::to_string(&summary.closings).expect("json");
     assert_eq!(page.verdicts_json(), expected);
     assert!(!summary.closings.is_empty());
+    let lines: Vec<String> = summary.closings.iter().map(ToString::to_string).collect();
+    assert_eq!(page.verdict_lines(), lines, "the CLI's lines");
 }
 
 #[test]
