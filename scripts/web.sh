@@ -38,7 +38,7 @@ export CARGO_PROFILE_RELEASE_LTO=fat CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1
 scripts/wasm-core.sh -p coulomb-hands-web --features coulomb-hands-web/enhanced-determinism
 wasm=$CARGO_TARGET_DIR/wasm32-unknown-unknown/release/coulomb_hands_web.wasm
 rm -rf web/pkg
-"$bindgen" --target web --no-typescript --out-dir web/pkg "$wasm"
+"$bindgen" --target web --out-dir web/pkg "$wasm"
 [[ -d web/node_modules/three ]] || (cd web && npm ci --no-audit --no-fund)
 rm -rf web/vendor web/data
 mkdir -p web/vendor/three/controls web/data

@@ -1,8 +1,10 @@
 // The desk's hand, driven by mouse and keys as the viewer's is (crates/coulomb-hands-view's
-// mouse_hand.rs): the rig's adult right hand, palm down, fingers away from the camera.
+// mouse_hand.rs, with its keys.rs bindings and rates): the rig's adult right hand, palm down,
+// fingers away from the camera.
 import * as THREE from 'three';
 
 const SPEED = 0.12; // m/s
+const FINE_SPEED = 0.03; // m/s, with Shift held
 const DRAG = 0.0006; // m per pixel of right-drag
 const TURN = Math.PI / 3; // rad/s
 const CURL_RATE = 0.6; // of a full curl per s
@@ -67,17 +69,26 @@ export class MouseHand {
     return (this.held.has(plus) ? 1 : 0) - (this.held.has(minus) ? 1 : 0);
   }
 
-  /** Moves the hand by the keys held over `dt` seconds and poses the world's hand. */
+  /** Moves the hand by the keys held over `dt` seconds and poses the world's hand: W S away
+   * and back, D A right and left, E Q up and down, J L I K O U turn it (yaw, pitch, roll),
+   * G H curl and open all fingers, 1 to 5 curl one (with Shift, open it), T swings the thumb
+   * across or back; Shift moves finely. */
   update(dt) {
+    const fine = this.held.has('ShiftLeft') || this.held.has('ShiftRight');
     const { forward, right } = this.heading();
     const along = new THREE.Vector3()
       .addScaledVector(forward, this.axis('KeyS', 'KeyW'))
       .addScaledVector(right, this.axis('KeyA', 'KeyD'))
-      .addScaledVector(new THREE.Vector3(0, 1, 0), this.axis('KeyF', 'KeyR'));
-    this.palm.addScaledVector(along, SPEED * dt);
-    this.turn.x += this.axis('KeyE', 'KeyQ') * TURN * dt;
-    const curl = this.axis('KeyH', 'KeyG') * CURL_RATE * dt;
-    this.curl = this.curl.map((c) => Math.min(1, Math.max(0, c + curl)));
+      .addScaledVector(new THREE.Vector3(0, 1, 0), this.axis('KeyQ', 'KeyE'));
+    this.palm.addScaledVector(along, (fine ? FINE_SPEED : SPEED) * dt);
+    const turn = new THREE.Vector3(this.axis('KeyL', 'KeyJ'), this.axis('KeyK', 'KeyI'),
+      this.axis('KeyU', 'KeyO'));
+    this.turn.addScaledVector(turn, TURN * dt);
+    const all = this.axis('KeyH', 'KeyG');
+    this.curl = this.curl.map((c, f) => {
+      const own = this.held.has(`Digit${f + 1}`) ? (fine ? -1 : 1) : 0;
+      return Math.min(1, Math.max(0, c + (all + own) * CURL_RATE * dt));
+    });
     const target = this.opposing ? 1 : 0;
     const step = OPPOSE_RATE * dt;
     this.opposition += Math.max(-step, Math.min(step, target - this.opposition));
