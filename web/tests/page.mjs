@@ -6,7 +6,9 @@
 // recording's closings get the native verdicts. Then a malformed scene shows its error and
 // the page keeps running.
 //
-//   node web/tests/page.mjs REFERENCE.json
+//   scripts/web.sh
+//   cargo run -p coulomb-hands-web --features enhanced-determinism --example reference > ref.json
+//   node web/tests/page.mjs ref.json
 import fs from 'node:fs/promises';
 import { serve, browser as launch, open, check } from './browser.mjs';
 

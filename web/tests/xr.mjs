@@ -6,7 +6,7 @@
 // the cube's wood. Without WebXR, or with the session refused, Enter VR says so and the page
 // stays on the desk; Enter AR enters immersive-ar.
 //
-//   node web/tests/xr.mjs [SCREENSHOT_DIR]
+//   scripts/web.sh && node web/tests/xr.mjs [SCREENSHOT_DIR]
 import path from 'node:path';
 import fs from 'node:fs/promises';
 import { serve, browser as launch, open, check } from './browser.mjs';
