@@ -82,11 +82,18 @@ export class HandView {
   }
 }
 
-/** A pool of arrows of one colour, drawn afresh each frame. */
+const shaftGeometry = new THREE.CylinderGeometry(1, 1, 1, 8).translate(0, 0.5, 0);
+const headGeometry = new THREE.ConeGeometry(1, 1, 12).translate(0, 0.5, 0);
+// Arrow widths (m): a shaft's radius, and its head's radius and length at the most.
+const SHAFT = 0.0012;
+const HEAD = 0.0035;
+const HEAD_LENGTH = 0.009;
+
+/** A pool of solid arrows of one colour, unlit and drawn over everything, afresh each frame. */
 export class Arrows {
   constructor(parent, color) {
     this.parent = parent;
-    this.color = color;
+    this.material = new THREE.MeshBasicMaterial({ color, depthTest: false });
     this.pool = [];
     this.used = 0;
   }
@@ -99,19 +106,21 @@ export class Arrows {
     const length = Math.hypot(vector[0], vector[1], vector[2]) * scale;
     if (!(length > MIN_ARROW)) return;
     if (this.used === this.pool.length) {
-      const arrow = new THREE.ArrowHelper(up, new THREE.Vector3(), 0.01, this.color);
-      arrow.line.material.depthTest = false;
-      arrow.cone.material.depthTest = false;
-      arrow.renderOrder = 10;
+      const arrow = new THREE.Group();
+      arrow.add(new THREE.Mesh(shaftGeometry, this.material), new THREE.Mesh(headGeometry, this.material));
+      arrow.children.forEach((m) => { m.renderOrder = 10; });
       this.parent.add(arrow);
       this.pool.push(arrow);
     }
     const arrow = this.pool[this.used++];
     const direction = new THREE.Vector3(vector[0], vector[1], vector[2]).normalize();
     arrow.position.set(from[0], from[1], from[2]);
-    arrow.setDirection(direction);
-    const head = Math.min(0.3 * length, 0.01);
-    arrow.setLength(length, head, 0.6 * head);
+    arrow.quaternion.setFromUnitVectors(up, direction);
+    const head = Math.min(0.35 * length, HEAD_LENGTH);
+    const [shaft, tip] = arrow.children;
+    shaft.scale.set(SHAFT, length - head, SHAFT);
+    tip.position.set(0, length - head, 0);
+    tip.scale.set(HEAD * head / HEAD_LENGTH, head, HEAD * head / HEAD_LENGTH);
     arrow.visible = true;
   }
 

@@ -13,11 +13,11 @@ export async function enterVr(page, mode = 'immersive-vr') {
     const device = new XRDevice(metaQuest3);
     device.primaryInputMode = 'hand';
     device.installRuntime({ forceInstall: true });
-    device.position.set(0, 1.3, 0.05);
+    device.position.set(0, 1.18, -0.12);
     window.device = device;` });
   await page.waitForFunction(() => window.device);
   await page.evaluate((q) => window.device.quaternion.set(...q),
-    new THREE.Quaternion().setFromEuler(new THREE.Euler(-0.75, 0, 0)).toArray());
+    new THREE.Quaternion().setFromEuler(new THREE.Euler(-0.8, 0, 0)).toArray());
   await page.evaluate((mode) => window.app.enter(mode), mode);
   return page.evaluate(() => ({ mode: window.app.xr && window.app.xr.mode,
     presenting: Boolean(window.app.xr && window.app.xr.renderer.xr.isPresenting),

@@ -32,6 +32,8 @@ try {
     await page.keyboard.up('KeyE');
     const lifted = await palm();
     check(lifted[1] - start[1] > 0.03, `E lifts the desk's hand (${(100 * (lifted[1] - start[1])).toFixed(1)} cm)`);
+    const untouched = await colours(page);
+    check(untouched.red === 0, 'before the hand touches anything, no force arrow is drawn');
     await page.evaluate(() => window.app.mouseHand().set({ palm: [0, 0.07, -0.06], curl: 0.3 }));
     await simulate(page, 0.3);
     const file = path.join(shots, 'desk.png');
@@ -93,8 +95,8 @@ try {
   check(gripped.pressing >= 2, `pinched: ${gripped.pressing} contacts press on the cube (${JSON.stringify(gripped)})`);
   check(held.pressing >= 2 && held.y > before.y + 0.08,
     `held: lifted ${(100 * (held.y - before.y)).toFixed(1)} cm with the hand, pressed by it`);
-  check(seen.skin > 300 && seen.wood > 100,
-    `immersive screenshot: the hand (${seen.skin} skin pixels) and the cube (${seen.wood} wood pixels)`);
+  check(seen.skin > 300 && seen.wood > 100 && seen.red > 20,
+    `immersive screenshot: the hand (${seen.skin} skin pixels), the cube (${seen.wood} wood pixels) and the grip's force arrows (${seen.red} red pixels)`);
   // Open: released, it falls back to the desk.
   await page.evaluate(() => window.device.hands.right.updatePinchValue(0));
   await simulate(page, 0.15);
