@@ -60,7 +60,13 @@ const app = {
 };
 window.app = app;
 
-await init();
+try {
+  await init();
+} catch (e) {
+  showError(`The physics could not be loaded (${e.message ?? e}): build the page with `
+    + 'scripts/web.sh and serve it over http, e.g. scripts/web.sh --serve');
+  throw e;
+}
 // The module itself, for the benchmark (web/bench/bench.mjs).
 app.wasm = wasm;
 const POSE = wasm.poseStride();

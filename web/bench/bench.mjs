@@ -8,7 +8,8 @@
 //   right hand pinching the desk's cube and the left its ball, 900 frames each posing both
 //   hands from their WebXR joints and stepping 11 or 12 steps (1000 a second), timed.
 //
-//   node web/bench/bench.mjs          (after scripts/web.sh; prints one JSON object)
+//   node web/bench/bench.mjs [OUT.json]   (after scripts/web.sh; prints one JSON object, and
+//                                         writes it to OUT.json, target/web-bench.json by default)
 import fs from 'node:fs/promises';
 import zlib from 'node:zlib';
 import { execFileSync } from 'node:child_process';
@@ -78,4 +79,6 @@ try {
   await browser.close();
   server.close();
 }
+const out = process.argv[2] ?? path.join(WEB, '..', 'target', 'web-bench.json');
+await fs.writeFile(out, JSON.stringify(result, null, 2));
 console.log(JSON.stringify(result, null, 2));
