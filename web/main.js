@@ -43,6 +43,12 @@ function clearError() {
   errorBox.hidden = true;
 }
 
+const pauseButton = document.getElementById('pause');
+function setPaused(paused) {
+  app.paused = paused;
+  pauseButton.textContent = paused ? 'Resume' : 'Pause';
+}
+
 const app = {
   ready: false,
   world: null,
@@ -158,7 +164,8 @@ function drawWorld(world) {
 }
 
 // The runs the page offers: the demo, every shipped scenario, the bundled recording, the desk.
-const MODES = [['desk', 'Desk: your hand (mouse and keys, or WebXR)'], ['demo', 'Demo: grasp, lift, carry, turn, open'],
+const MODES = [['desk', 'Desk: your hand (mouse and keys, or WebXR)'],
+  ['demo', 'Demo: grasp, lift, carry, turn, open'],
   ['recording', 'Recording: grab.json.lz, a box at each closing'],
   ...wasm.shippedScenarios().map((name) => [name, `Scenario: ${name}`])];
 for (const [value, label] of MODES) {
@@ -243,6 +250,7 @@ async function load(mode, file = null) {
   app.mode = file ? file.name : mode;
   app.source = { mode, file };
   app.done = false;
+  setPaused(false);
   app.trace = [];
   app.accumulated = 0;
   if (mouse) mouse.dispose();
@@ -285,7 +293,7 @@ function frame(time, xrFrame) {
     }
   } catch (e) {
     showError(e);
-    app.paused = true;
+    setPaused(true);
   }
   draw(world, elapsed / 1000);
   renderer.render(scene, camera);
@@ -386,9 +394,7 @@ document.getElementById('restart').addEventListener('click', () => {
   clearError();
   load(app.source.mode, app.source.file);
 });
-document.getElementById('pause').addEventListener('click', () => {
-  app.paused = !app.paused;
-});
+document.getElementById('pause').addEventListener('click', () => setPaused(!app.paused));
 document.getElementById('file').addEventListener('change', (event) => {
   const file = event.target.files[0];
   clearError();
