@@ -64,8 +64,9 @@ struct ReportInputs {
 pub struct Sim {
     driver: Driver<'static, InteractionWorld>,
     script: Script,
-    /// How long its script runs (s), or `None`.
-    duration: Option<f64>,
+    /// How many steps its script runs, counted as the library's own run counts them
+    /// (`GraspLiftCarry::run`, `Scenario::run`, `replay`), or `None`.
+    script_steps: Option<usize>,
     /// A name for the page.
     name: String,
 }
@@ -97,8 +98,8 @@ pub fn shipped_names() -> Vec<String> {
 }
 
 impl Sim {
-    fn new(world: InteractionWorld, script: Script, duration: Option<f64>, name: &str) -> Sim {
-        Sim { driver: Driver::new(world), script, duration, name: name.into() }
+    fn new(world: InteractionWorld, script: Script, steps: Option<usize>, name: &str) -> Sim {
+        Sim { driver: Driver::new(world), script, script_steps: steps, name: name.into() }
     }
 
     /// An empty world with `config`.
@@ -112,7 +113,8 @@ impl Sim {
     pub fn demo() -> Result<Sim, Error> {
         let demo = text(GraspLiftCarry::new(InteractionConfig::default()))?;
         let GraspLiftCarry { world, hand, half, .. } = demo;
-        let mut sim = Sim::new(world, Script::Free, Some(f64::from(GraspLiftCarry::END)), "demo");
+        let steps = (GraspLiftCarry::END / world.config().dt).round() as usize;
+        let mut sim = Sim::new(world, Script::Free, Some(steps), "demo");
         let script =
             PoseFn::new(Side::Right, move |t| Some(GraspLiftCarry::pose_at(half, t as f32)));
         text(sim.driver.drive(hand, script))?;
@@ -139,8 +141,9 @@ impl Sim {
         text(world.add_scene(&scenario.scene))?;
         let history = Box::new(History::new(&world));
         let report = ReportInputs { name: scenario.name.clone(), checks: scenario.checks, history };
-        let duration = Some(f64::from(scenario.duration));
-        let mut sim = Sim::new(world, Script::Scenario { report }, duration, &scenario.name);
+        // At least one step, so the checks have a state to measure.
+        let steps = ((scenario.duration / scenario.config.dt).round() as usize).max(1);
+        let mut sim = Sim::new(world, Script::Scenario { report }, Some(steps), &scenario.name);
         for hand in scenario.hands {
             sim.driver.add_hand(hand);
         }
@@ -178,10 +181,9 @@ impl Sim {
         let closings =
             object.map(|o| text(Closings::new(&playback, o)).map(Box::new)).transpose()?;
         // The CLI's replay runs its whole duration and one step more.
-        let dt = f64::from(world.config().dt);
-        let duration = ((playback.duration / dt).floor() + 1.0) * dt;
+        let steps = (playback.duration / f64::from(world.config().dt)).floor() as usize + 1;
         let script = Script::Recording { closings };
-        let mut sim = Sim::new(world, script, Some(duration), &recording.source_name);
+        let mut sim = Sim::new(world, script, Some(steps), &recording.source_name);
         let playback = Box::new(playback);
         for track in 0..playback.tracks.len() {
             sim.driver.add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
@@ -196,7 +198,8 @@ impl Sim {
 
     /// How long its script runs (s); `None` for a world the caller drives.
     pub fn duration(&self) -> Option<f64> {
-        self.duration
+        let dt = f64::from(self.world().config().dt);
+        self.script_steps.map(|n| n as f64 * dt)
     }
 
     /// The world.
@@ -217,12 +220,7 @@ impl Sim {
     /// set), the hand forces, rapier's step; a script stops at its end.
     /// Returns the steps run.
     pub fn step(&mut self, n: usize) -> Result<usize, Error> {
-        let dt = f64::from(self.world().config().dt);
-        let left = match self.duration {
-            // The script's steps, rounded as `Scenario::run` rounds them.
-            Some(d) => ((d / dt).round() as usize).max(1).saturating_sub(self.steps()),
-            None => n,
-        };
+        let left = self.script_steps.map_or(n, |total| total.saturating_sub(self.steps()));
         let mut run = 0;
         for _ in 0..n.min(left) {
             let mut observers: Vec<&mut dyn Observer> = match &mut self.script {
@@ -240,10 +238,7 @@ impl Sim {
 
     /// Whether its script has run to its end (never, without one).
     pub fn finished(&self) -> bool {
-        self.duration.is_some_and(|d| {
-            let dt = f64::from(self.world().config().dt);
-            self.steps() >= ((d / dt).round() as usize).max(1)
-        })
+        self.script_steps.is_some_and(|total| self.steps() >= total)
     }
 
     /// A scenario's checks judged on the run so far, as `scenario --json`
