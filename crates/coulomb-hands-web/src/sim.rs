@@ -42,9 +42,9 @@ pub const DESK: &str = include_str!("../../coulomb-hands-view/scenes/desk.json")
 /// example): a 4 cm, 50 g box.
 pub const CLOSING_OBJECT: &str = "box:0.04:0.05";
 
-/// What a world runs: its own steps only, or a script with checks.
+/// What watches a world's run: nothing, a scenario's checks, or a recording's closings.
 enum Script {
-    /// Hands set by the caller.
+    /// Nothing: the hands are the caller's, or a script's without checks (the demo's).
     Free,
     /// A scenario, whose checks are judged on its history.
     Scenario { report: ReportInputs },
@@ -92,7 +92,7 @@ pub fn config(json: &str) -> Result<InteractionConfig, Error> {
     Ok(config)
 }
 
-/// The shipped scenarios' names, then the desk's (`desk`).
+/// The shipped scenarios' names, in the CLI's order.
 pub fn shipped_names() -> Vec<String> {
     scenario::shipped().iter().map(|(name, _)| (*name).to_string()).collect()
 }
