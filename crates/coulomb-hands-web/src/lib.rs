@@ -27,6 +27,19 @@ use coulomb_hands::ObjectId;
 use sim::Sim;
 use wasm_bindgen::prelude::*;
 
+/// A panic (a bug: the library returns errors for bad input) is written to the browser's
+/// console with its message before the module aborts, instead of a bare `unreachable`.
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen(start)]
+fn start() {
+    #[wasm_bindgen]
+    extern "C" {
+        #[wasm_bindgen(js_namespace = console)]
+        fn error(message: &str);
+    }
+    std::panic::set_hook(Box::new(|info| error(&format!("coulomb-hands-web: {info}"))));
+}
+
 /// The library's message as a JavaScript `Error`.
 fn js<T>(result: Result<T, sim::Error>) -> Result<T, JsError> {
     result.map_err(|e| JsError::new(&e))
