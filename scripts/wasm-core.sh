@@ -4,6 +4,8 @@
 #
 #   scripts/wasm-core.sh [more cargo build options, e.g. --features enhanced-determinism]
 #
+# (scripts/web.sh adds `-p coulomb-hands-web`, the page's crate, whose cdylib is the .wasm.)
+#
 # Two routes, by what the machine has:
 # - the ordinary one, `cargo build --target wasm32-unknown-unknown`, when the active toolchain
 #   has the target installed (`rustup target list --installed` lists it, or, without rustup,

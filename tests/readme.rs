@@ -30,7 +30,7 @@ fn pages() -> Vec<PathBuf> {
     }
     let root = Path::new(ROOT);
     let mut out = vec![root.join("README.md")];
-    for krate in ["coulomb-hands-bevy", "coulomb-hands-view"] {
+    for krate in ["coulomb-hands-bevy", "coulomb-hands-view", "coulomb-hands-web"] {
         out.push(root.join("crates").join(krate).join("README.md"));
     }
     walk(&root.join(BOOK), &mut out);

@@ -177,8 +177,10 @@ impl GraspLiftCarry {
         Self::pose_at(self.half, t)
     }
 
-    /// The scripted hand at `t` (s) for a cube of half size `half` (m).
-    fn pose_at(half: f32, t: f32) -> HandPose {
+    /// The scripted hand at `t` (s) for a cube of half size `half` (m):
+    /// the script without its world, for a driver that owns the world (the
+    /// web page's).
+    pub fn pose_at(half: f32, t: f32) -> HandPose {
         let close = smoothstep(Self::CLOSE.0, Self::CLOSE.1, t);
         let closure = close * (1.0 - smoothstep(Self::OPEN.0, Self::OPEN.1, t));
         let (rot, shift) = Self::hand_motion(t);
