@@ -122,6 +122,12 @@ try {
     await ar.evaluate(() => window.device.hands.left.position.set(-0.5, 1.6, 0.2));
     const squeezeAr = await aimPinch(ar, 'right', 0, 0.04, [0.15, 1.0, -0.3]);
     await pinch(ar, 'right', squeezeAr);
+    // As in VR, the grip settles within a second of simulated time before the lift.
+    let grippedAr = await object(ar, 0);
+    for (let k = 0; k < 10 && grippedAr.pressing < 2; k++) {
+      await simulate(ar, 0.1);
+      grippedAr = await object(ar, 0);
+    }
     for (let k = 1; k <= 10; k++) {
       await ar.evaluate(() => { window.device.hands.right.position.y += 0.006; });
       await simulate(ar, 0.05);
