@@ -87,9 +87,13 @@ impl Curvature {
 
     /// Whether it is curved enough to roll along some direction.
     fn curved(self) -> bool {
-        let mean = 0.5 * (self.xx + self.yy);
+        self.largest() >= LEAST_CURVATURE
+    }
+
+    /// Its larger eigenvalue: the sharpest bend at C (1/m).
+    fn largest(self) -> f32 {
         let spread = (0.25 * (self.xx - self.yy) * (self.xx - self.yy) + self.xy * self.xy).sqrt();
-        mean + spread >= LEAST_CURVATURE
+        0.5 * (self.xx + self.yy) + spread
     }
 
     /// `K·v` for a tangent vector `v` given in the basis.
@@ -165,9 +169,8 @@ fn object_curvature(
     let k = Curvature { xx: d1.dot(t1), xy, yy: d2.dot(t2) };
     // Sharper than the step can resolve is an edge, which closest points
     // round off over the step: a box's edge does not roll.
-    let sharpest = 0.5 * (k.xx + k.yy) + (0.25 * (k.xx - k.yy).powi(2) + k.xy * k.xy).sqrt();
     let finite = [k.xx, k.xy, k.yy].iter().all(|v| v.is_finite());
-    (finite && sharpest <= 0.5 / h).then_some(k)
+    (finite && k.largest() <= 0.5 / h).then_some(k)
 }
 
 /// The object's surface point nearest `q`, a point near C (outward normal
