@@ -200,7 +200,7 @@ const PALM_EDGE_MARGIN: f32 = 0.002;
 /// contact, just as a real box on a real palm slides at atan μ_st whatever
 /// its height. Near a palm edge, or for a face turned away by more than
 /// 60°, the object's normal stays the contact's.
-fn palm_face_under(palm: &Palm, local: Vec3, n: Vec3) -> Option<Vec3> {
+pub(super) fn palm_face_under(palm: &Palm, local: Vec3, n: Vec3) -> Option<Vec3> {
     let h = palm.half_extents;
     let axis = (local / h).abs().max_position();
     let face = Vec3::AXES[axis] * local[axis].signum();

@@ -41,7 +41,7 @@
 //! dampers ([`Anchor::rolled`]), which would otherwise brake the roll, or
 //! stall a sliding ball's spin.
 
-use super::anchor::{Anchor, BoneAnchor, Site};
+use super::anchor::{Anchor, BoneAnchor, Site, palm_face_under};
 use super::surface;
 use super::{BoneMotion, ObjectView};
 use crate::hand::{BoneShape, Palm};
@@ -357,13 +357,18 @@ impl Anchor {
             // found again from the foot along the object's normal, it would
             // land a depth × the normals' angle away, and each step's error
             // would stretch the spring further.
+            // Rolled past the face's edge, p is found as a new contact's
+            // is: clamped to the palm, at its edge, where the palm has no
+            // normal of its own. The palm ends there; the face does not.
             (BoneAnchor::Palm { local, face: Some(face) }, BoneShape::Palm(palm)) => {
                 let on_face = face * face.dot(local);
                 let shift = foot - site.p;
                 let moved = palm.to_local(site.p + shift - shift.dot(site.n) * site.n);
-                BoneAnchor::Palm {
-                    local: moved - face * face.dot(moved) + on_face,
-                    face: Some(face),
+                let local = moved - face * face.dot(moved) + on_face;
+                if palm_face_under(&palm, local, normal) == Some(face) {
+                    BoneAnchor::Palm { local, face: Some(face) }
+                } else {
+                    BoneAnchor::at(&motion.now(), motion.palm_now(), foot, normal)
                 }
             }
             (BoneAnchor::Palm { .. }, _) => {

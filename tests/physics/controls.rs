@@ -165,6 +165,30 @@ fn a_plate_carried_on_a_hand_tipped_past_the_friction_angle_slides_off() {
 }
 
 #[test]
+fn a_ball_pinned_to_the_palm_or_too_slick_to_roll_misses_rolling_s_law() {
+    // Pinned (the thesis's anchored C, rolling contacts off): C turns away
+    // with the ball, which sinks into the palm while the measured depth
+    // falls, then slips, finds its depth again and kicks. Its acceleration
+    // over the window is far from (5/7)·g·sin θ.
+    let pinned = variant("ball-roll", r#""rolling": true"#, r#""rolling": false"#);
+    assert!(!check(&pinned, "acceleration").passed, "{}", table(&pinned));
+    // Too slick to roll: μ 0.05, under the (2/7)·tan 14° = 0.071 rolling
+    // needs. It slides at g (sin θ − μ cos θ) = 1.90 m/s², past the bound,
+    // and friction spins it up at (5/2)·μ·g·cos θ / r = 59 rad/s², so it
+    // turns 89° over the window, short of the 127° that rolling its
+    // distance takes.
+    let slick = r#"{"name": "slick", "skin": {"static_mu": 0.05, "dynamic_mu": 0.05},
+                    "surface_friction": 0.9, "source": "test"}"#;
+    let slides = variant("ball-roll", r#""material": "rubber""#, &material(slick));
+    assert!(!check(&slides, "acceleration").passed, "{}", table(&slides));
+    assert!(!check(&slides, "turned").passed, "{}", table(&slides));
+    // Both still leave the hand: the checks fail on the law, not the set-up.
+    for r in [&pinned, &slides] {
+        assert!(check(r, "fell off").passed, "{}", table(r));
+    }
+}
+
+#[test]
 fn a_steady_push_on_grippier_ground_needs_more_than_the_scenario_s_mu_m_g() {
     // The push reads the ground's friction. Ground friction 0.6 instead of
     // 0.2 makes the combined μ 0.55, not 0.35: the same steady push needs

@@ -42,14 +42,10 @@ fn roll_down(
     seconds: f32,
 ) -> Roll {
     let mut world = InteractionWorld::new(config).unwrap();
-    let normal = Vec3::new(0.0, theta.cos(), theta.sin());
-    let down = Vec3::new(0.0, -theta.sin(), theta.cos());
-    let half = Vec3::new(0.06, 0.012, 0.25);
     let center = Vec3::new(0.0, 0.3, 0.0);
-    let mut pose = parked_hand(Side::Right);
-    pose.palm = Palm::from_normal_direction(center, normal, down, half).unwrap();
+    let (pose, normal, down) = tilted_palm(theta, Vec3::new(0.06, 0.012, 0.25), center);
     // Resting 0.4 mm into the skin, a third of the way down.
-    let start = center + normal * (half.y + radius - 0.0004) - down * 0.15;
+    let start = center + normal * (0.012 + radius - 0.0004) - down * 0.15;
     let desc = ObjectDesc { position: start, ..desc };
     let id = world.add_object(&desc).unwrap();
     let hand = world.add_hand(Side::Right);
@@ -80,6 +76,17 @@ fn roll_down(
         depth,
         spin: (spins[a], spins[b]),
     }
+}
+
+/// A hand whose palm is a flat box of half extents `half` (m) centred at
+/// `center`, tilted `theta` (rad) down +z, its fingers parked away; with the
+/// palm's normal and the direction down its slope.
+fn tilted_palm(theta: f32, half: Vec3, center: Vec3) -> (HandPose, Vec3, Vec3) {
+    let normal = Vec3::new(0.0, theta.cos(), theta.sin());
+    let down = Vec3::new(0.0, -theta.sin(), theta.cos());
+    let mut pose = parked_hand(Side::Right);
+    pose.palm = Palm::from_normal_direction(center, normal, down, half).unwrap();
+    (pose, normal, down)
 }
 
 fn ball(radius: f32, mass: f32, material: Material) -> ObjectDesc {
@@ -173,6 +180,37 @@ fn too_steep_to_roll_a_ball_slides_and_spins_up_as_kinetic_friction_says() {
     let ring = roll_down(rolling(), theta, r, desc, seconds);
     let spin_rate = (ring.spin.1 - ring.spin.0) / (seconds - 0.1);
     assert!(spin_rate > 0.7 * expected, "ω̇ {spin_rate} vs {expected}");
+}
+
+#[test]
+fn a_ball_rolled_past_the_palm_s_edge_leaves_the_palm() {
+    // A 2.8 cm ball let go 1 cm above the lower edge of a 6 cm-long palm
+    // tipped 8° rolls over the edge: past it, no palm is under the ball,
+    // which falls. (A rolling contact's p once slid along the face's plane
+    // past the palm, and held the ball up on a palm that was not there.)
+    let (theta, r, half) = (8f32.to_radians(), 0.014, Vec3::new(0.05, 0.011, 0.03));
+    let mut world = InteractionWorld::new(rolling()).unwrap();
+    let center = Vec3::new(0.0, 0.5, 0.0);
+    let (pose, normal, down) = tilted_palm(theta, half, center);
+    let start = center + normal * (half.y + r - 0.0004) + down * (half.z - 0.01);
+    let id = world.add_object(&ObjectDesc { position: start, ..ball(r, 0.03, grippy()) }).unwrap();
+    let hand = world.add_hand(Side::Right);
+    let mut rolled = 0.0f32;
+    run(
+        &mut world,
+        hand,
+        0.5,
+        |_| pose.clone(),
+        |w, _| {
+            rolled = rolled.max((position(w, id) - center).dot(down));
+        },
+    );
+    // It rolled to the edge on the palm, then fell: nothing touches it,
+    // and its centre is below the palm's face.
+    assert!(rolled > half.z, "it reached {rolled} m down the palm");
+    assert!(world.contacts_on(id).is_empty(), "{} contacts", world.contacts_on(id).len());
+    let height = (position(&world, id) - center).dot(normal);
+    assert!(height < 0.0, "its centre {height} m above the palm's middle");
 }
 
 /// A 3 cm ball pinched from above by the index's middle phalanx and from

@@ -99,6 +99,20 @@ pub enum Measure {
         /// Time (s).
         at: f32,
     },
+    /// The object's mean acceleration from `from` to `to` along the unit
+    /// world `axis` (m/s²): its velocity's change along the axis over the
+    /// time between, as Newton's second law reads it for a steady force
+    /// (a ball rolling down a slope).
+    Acceleration {
+        /// The object's name in the scene.
+        object: String,
+        /// Start time (s).
+        from: f32,
+        /// End time (s); after `from`.
+        to: f32,
+        /// Unit axis (world) to measure along.
+        axis: Vec3,
+    },
     /// The object's speed at `at` (m/s).
     Speed {
         /// The object's name in the scene.
@@ -226,6 +240,14 @@ pub enum CheckError {
     /// A path of fewer than two finite points.
     #[error("measure.path: needs at least two finite [x, z] points")]
     Path,
+    /// A window whose end is not after its start.
+    #[error("measure.to: must be after measure.from ({from}), got {to}")]
+    Window {
+        /// Its start (s).
+        from: f32,
+        /// Its end (s).
+        to: f32,
+    },
     /// A landing height or target that is not finite.
     #[error("measure.{field}: must be finite, got {value}")]
     NotFinite {
@@ -260,6 +282,7 @@ impl Check {
             | Measure::Rotation { object, .. }
             | Measure::Tilt { object, .. }
             | Measure::Speed { object, .. }
+            | Measure::Acceleration { object, .. }
             | Measure::PathDeviation { object, .. }
             | Measure::Contacts { object, .. }
             | Measure::ReleaseSpeed { object, .. }
@@ -296,9 +319,14 @@ impl Check {
         if let Some((field, value)) = landing.into_iter().find(|(_, v)| !v.is_finite()) {
             return Err(CheckError::NotFinite { field, value });
         }
+        if let Measure::Acceleration { from, to, .. } = &self.measure
+            && to <= from
+        {
+            return Err(CheckError::Window { from: *from, to: *to });
+        }
         let axis = match &self.measure {
             Measure::Displacement { axis, .. } | Measure::Rotation { axis, .. } => *axis,
-            Measure::HandForce { axis, .. } => Some(*axis),
+            Measure::HandForce { axis, .. } | Measure::Acceleration { axis, .. } => Some(*axis),
             Measure::PathDeviation { path, .. }
                 if path.len() < 2 || path.iter().flatten().any(|v| !v.is_finite()) =>
             {
@@ -381,6 +409,12 @@ impl Check {
                 (pose(index(object), *at).1 * Vec3::Y).angle_between(Vec3::Y).to_degrees()
             }
             Measure::Speed { object, at } => h.velocities[h.step(*at)][index(object)].length(),
+            Measure::Acceleration { object, from, to, axis } => {
+                let (o, a, b) = (index(object), h.step(*from), h.step(*to));
+                let dv = (h.velocities[b][o] - h.velocities[a][o]).dot(*axis);
+                // A run that ended before `from`: no time between.
+                if b > a { dv / ((b - a) as f32 * h.dt) } else { f32::NAN }
+            }
             Measure::GroupDisplacement { prefix, except, from, to } => {
                 let (a, b) = (h.step(*from), h.step(to.unwrap_or(h.end())));
                 h.names
@@ -487,6 +521,25 @@ mod tests {
         assert!((r.value - 1.0).abs() < 1e-6 && r.passed, "{r:?}");
         let slanted = check(along(Vec3::new(1.0, 1.0, 0.0), 0.5), Some(0.0), None);
         assert!(matches!(slanted.validate(), Err(CheckError::Axis(_))));
+    }
+
+    #[test]
+    fn acceleration_is_the_velocity_change_over_the_window_along_the_axis() {
+        let mut h = history(&[Vec3::ZERO; 4], &[Quat::IDENTITY; 4]);
+        h.velocities = [0.0, 0.3, 0.9, 1.2].iter().map(|&v| vec![Vec3::new(v, -v, 0.0)]).collect();
+        let along = |axis, from, to| Measure::Acceleration { object: "box".into(), from, to, axis };
+        // Steps 1 to 4 are at 0.5 … 2.0 s: from 0.5 to 1.5 s, 0.9 m/s in 1 s.
+        let r = check(along(Vec3::X, 0.5, 1.5), Some(0.85), Some(0.95)).evaluate(&h);
+        assert!((r.value - 0.9).abs() < 1e-6 && r.passed, "{r:?}");
+        let r = check(along(-Vec3::Y, 1.0, 2.0), None, Some(0.5)).evaluate(&h);
+        assert!((r.value - 0.9).abs() < 1e-6 && !r.passed, "{r:?}");
+        // A window past the run's end has no time in it: not a number.
+        let r = check(along(Vec3::X, 3.0, 4.0), Some(0.0), None).evaluate(&h);
+        assert!(r.value.is_nan() && !r.passed, "{r:?}");
+        let backwards = check(along(Vec3::X, 1.5, 0.5), Some(0.0), None).validate();
+        assert_eq!(backwards, Err(CheckError::Window { from: 1.5, to: 0.5 }));
+        let e = check(along(Vec3::new(1.0, 1.0, 0.0), 0.5, 1.5), Some(0.0), None).validate();
+        assert!(matches!(e, Err(CheckError::Axis(_))), "{e:?}");
     }
 
     #[test]

@@ -88,6 +88,7 @@ pub fn shipped() -> &'static [(&'static str, &'static str)] {
         "jenga-two-hands",
         "flat-hand-lift",
         "plate-carry",
+        "ball-roll",
         "catch",
         "slide-slippery",
         "tilt-wooden",
