@@ -20,16 +20,6 @@ pub fn at_least_zero(s: &str) -> Result<f64, String> {
     }
 }
 
-pub fn parse_gamma(s: &str) -> Result<coulomb_hands::GammaMode, String> {
-    if s == "auto" {
-        return Ok(coulomb_hands::GammaMode::Auto);
-    }
-    match s.parse::<f32>() {
-        Ok(g) if g.is_finite() && g > 0.0 => Ok(coulomb_hands::GammaMode::Fixed(g)),
-        _ => Err(format!("expected \"auto\" or a positive number of N/m, got \"{s}\"")),
-    }
-}
-
 pub fn parse_vec3(s: &str) -> Result<glam::Vec3, String> {
     let v: Vec<f32> = s
         .split(',')

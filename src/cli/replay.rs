@@ -1,6 +1,5 @@
 //! `replay`: a recording, a session file, or a soak.
 
-use super::args::parse_gamma;
 use super::options::{JsonOutput, MethodChoice, SessionArgs, TraceOutput};
 use super::{Outcome, print_objects, progress_bar};
 use coulomb_hands::input::recording::Format;
@@ -24,7 +23,7 @@ pub struct ReplayArgs {
     #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
     object_at_grasp: Option<GraspObject>,
     /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
-    #[arg(long, default_value_t = GammaMode::default(), value_parser = parse_gamma)]
+    #[arg(long, default_value_t = GammaMode::default(), value_parser = clap::value_parser!(GammaMode))]
     gamma: GammaMode,
     #[command(flatten)]
     method: MethodChoice,

@@ -38,6 +38,23 @@ pub enum Side {
     Right,
 }
 
+/// `left` or `right`, as files and the bindings spell a side.
+impl std::str::FromStr for Side {
+    type Err = UnknownSide;
+    fn from_str(s: &str) -> Result<Side, UnknownSide> {
+        match s {
+            "left" => Ok(Side::Left),
+            "right" => Ok(Side::Right),
+            _ => Err(UnknownSide(s.to_string())),
+        }
+    }
+}
+
+/// A side that is neither `left` nor `right`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("expected \"left\" or \"right\", got {0:?}")]
+pub struct UnknownSide(pub String);
+
 /// A digit, thumb first.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Finger {
@@ -468,6 +485,14 @@ mod tests {
         assert_eq!(Bone::from_index(16), Bone::Palm);
         assert_eq!(Bone::Finger(Finger::Pinky, Phalanx::Distal).index(), 15);
         assert_eq!(Bone::Finger(Finger::Thumb, Phalanx::Distal).to_string(), "thumb-distal");
+    }
+
+    #[test]
+    fn a_side_is_spelled_left_or_right() {
+        assert_eq!("left".parse::<Side>(), Ok(Side::Left));
+        assert_eq!("right".parse::<Side>(), Ok(Side::Right));
+        let e = "Right".parse::<Side>().unwrap_err().to_string();
+        assert_eq!(e, r#"expected "left" or "right", got "Right""#);
     }
 
     #[test]

@@ -241,15 +241,11 @@ fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, Inp
     let o = object(place, path, v)?;
     let keys = ["side", "layout", "joints", "radii", "orientations", "id", "grab", "pinch"];
     known_keys(place, path, o, &keys)?;
-    let side = match o.get("side").and_then(Value::as_str) {
-        Some("left") => Side::Left,
-        Some("right") => Side::Right,
-        _ => {
-            let got = o.get("side").map_or("nothing".into(), Value::to_string);
-            let why = format!("expected \"left\" or \"right\", got {got}");
-            return Err(place.err(at("side"), why));
-        }
-    };
+    let side = o.get("side").and_then(Value::as_str).and_then(|s| s.parse::<Side>().ok());
+    let side = side.ok_or_else(|| {
+        let got = o.get("side").map_or("nothing".into(), Value::to_string);
+        place.err(at("side"), format!("expected \"left\" or \"right\", got {got}"))
+    })?;
     let layout = o.get("layout").and_then(Value::as_str).and_then(|n| n.parse::<Layout>().ok());
     let layout = layout.ok_or_else(|| {
         let got = o.get("layout").map_or("nothing".into(), Value::to_string);

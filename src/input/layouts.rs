@@ -30,7 +30,8 @@
 
 use super::TrackedHand;
 use super::convert::Conversion;
-use crate::hand::Side;
+use super::skeleton::{SkeletonError, hand_pose};
+use crate::hand::{HandPose, PoseError, Side};
 use glam::{Quat, Vec3};
 
 /// A tracked joint: position (m), orientation and radius (m).
@@ -172,6 +173,40 @@ pub fn from_layout(
         joints[openxr::PALM].orientation = palm_orientation(side, positions);
     }
     from_openxr(id, side, &joints)
+}
+
+/// Why one frame of a tracker's joints made no hand pose.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JointsError {
+    /// A joint is missing, not finite, or has a negative radius.
+    #[error(transparent)]
+    Layout(#[from] LayoutError),
+    /// The joints made no skeleton (fingers of zero length, say).
+    #[error(transparent)]
+    Skeleton(#[from] SkeletonError),
+    /// The skeleton made a pose the world would refuse.
+    #[error(transparent)]
+    Pose(#[from] PoseError),
+}
+
+/// One frame of `layout`'s joints (m, y up; radii and orientations as for
+/// [`from_layout`]) as the 16 bones of the hand model, checked as the world
+/// checks a pose, so that a pose held for later (an app's input) fails now
+/// and says why. The one way from joints to a pose: the Python package's
+/// `set_hand_joints`, the web page's WebXR hands and the Bevy plugin's
+/// OpenXR hands all come through here. `id` is the hand's, for messages.
+pub fn hand_pose_from_joints(
+    layout: Layout,
+    id: u32,
+    side: Side,
+    positions: &[Vec3],
+    radii: Option<&[f32]>,
+    orientations: Option<&[Quat]>,
+) -> Result<HandPose, JointsError> {
+    let tracked = from_layout(layout, i64::from(id), side, positions, radii, orientations)?;
+    let pose = hand_pose(&tracked, &Conversion::identity())?;
+    pose.validate(id)?;
+    Ok(pose)
 }
 
 /// OpenXR `XrHandJointEXT` indices.

@@ -98,6 +98,10 @@ impl Playback {
             field,
             reason,
         };
+        if !(grace.is_finite() && grace >= 0.0) {
+            let why = format!("must be a finite number ≥ 0 s, got {grace}");
+            return Err(InputError { frame: None, ..fail(0, "grace".into(), why) });
+        }
         let start = frames.first().map_or(0, |f| f.timestamp_us);
         let mut tracks: Vec<Track> = Vec::new();
         let mut skipped = Vec::new();

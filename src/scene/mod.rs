@@ -19,6 +19,7 @@ pub mod tower;
 pub use file::{Ground, Scene, SceneError};
 pub use material::Material;
 pub use object::{
-    GammaMode, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, Part, ShapeDesc, StaticDesc,
+    GammaError, GammaMode, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, Part, ShapeDesc,
+    StaticDesc,
 };
 pub use tower::Tower;

@@ -192,6 +192,17 @@ fn playback_names_the_frame_whose_time_or_hand_is_wrong() {
     names(e, &["frame 0 hands[0]: hand 0: bone middle-proximal: zero-length bone"]);
 }
 
+#[test]
+fn a_grace_period_that_is_negative_or_not_a_number_is_named() {
+    let rec = from_json("rec.json", &serde_json::from_str(&recording(&[frame(0, &[])])).unwrap());
+    let rec = rec.unwrap();
+    let conversion = Conversion::leap_desktop(Vec3::ZERO);
+    for grace in [-0.05, f64::NAN, f64::INFINITY] {
+        let e = Playback::new("rec.json", &rec.frames, &conversion, grace).unwrap_err();
+        names(e, &["rec.json: grace: must be a finite number ≥ 0 s, got"]);
+    }
+}
+
 fn tracked() -> coulomb_hands::input::TrackedHand {
     let rec = from_json(
         "rec.json",

@@ -16,10 +16,9 @@
 use crate::physics::HandPhysics;
 use crate::reflect::SideReflect;
 use bevy::prelude::*;
-use coulomb_hands::hand::{HandPose, HandSample, PoseError, Side};
-use coulomb_hands::input::convert::Conversion;
-use coulomb_hands::input::layouts::{self, Joint, LayoutError, openxr};
-use coulomb_hands::input::skeleton::{SkeletonError, hand_pose};
+use coulomb_hands::hand::{HandPose, HandSample, Side};
+pub use coulomb_hands::input::layouts::JointsError;
+use coulomb_hands::input::layouts::{Joint, Layout, hand_pose_from_joints, openxr};
 use coulomb_hands::run::RunError;
 use coulomb_hands::run::drive::HandSource;
 use std::sync::{Arc, Mutex, PoisonError};
@@ -52,20 +51,6 @@ pub struct HandInput {
     /// not tracked.
     #[reflect(ignore)]
     sample: Option<HandSample>,
-}
-
-/// Why a frame's joints made no hand.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum JointsError {
-    /// A joint is not finite, or has a negative radius.
-    #[error(transparent)]
-    Layout(#[from] LayoutError),
-    /// The joints made no skeleton (fingers of zero length, say).
-    #[error(transparent)]
-    Skeleton(#[from] SkeletonError),
-    /// The skeleton made a pose the world would refuse.
-    #[error(transparent)]
-    Pose(#[from] PoseError),
 }
 
 impl HandInput {
@@ -105,10 +90,11 @@ pub fn openxr_sample(
     side: Side,
     joints: &[Joint; openxr::COUNT],
 ) -> Result<HandSample, JointsError> {
-    let id = i64::from(side == Side::Right);
-    let hand = layouts::from_openxr(id, side, joints)?;
-    let pose = hand_pose(&hand, &Conversion::identity())?;
-    pose.validate(id as u32)?;
+    let positions = joints.map(|j| j.position);
+    let (radii, orientations) = (joints.map(|j| j.radius), joints.map(|j| j.orientation));
+    let id = u32::from(side == Side::Right);
+    let given = (Some(&radii[..]), Some(&orientations[..]));
+    let pose = hand_pose_from_joints(Layout::OpenXr, id, side, &positions, given.0, given.1)?;
     Ok(HandSample::from_pose(pose))
 }
 

@@ -3,7 +3,7 @@
 //! them.
 
 use crate::ConfigError;
-use coulomb_hands::{InteractionConfig, Method};
+use coulomb_hands::{GammaMode, InteractionConfig, Method};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use pythonize::depythonize;
@@ -12,14 +12,50 @@ use pythonize::depythonize;
 #[pyclass(module = "coulomb_hands", eq, from_py_object)]
 #[derive(Clone, PartialEq)]
 pub struct Config {
-    pub inner: InteractionConfig,
+    inner: InteractionConfig,
+    /// `inner`'s fields as a config file has them, kept beside it so that
+    /// reading one is a lookup, not the whole config written and parsed.
+    fields: serde_json::Map<String, serde_json::Value>,
+}
+
+impl Config {
+    /// `config`, which the library has checked.
+    pub fn new_checked(config: InteractionConfig) -> PyResult<Config> {
+        // Through JSON's text, as `as_dict`, so that 0.001 s reads 0.001.
+        let text = serde_json::to_string(&config);
+        let fields = text.and_then(|t| serde_json::from_str(&t));
+        let mut fields: serde_json::Map<String, serde_json::Value> =
+            fields.map_err(|e| crate::OutputError::new_err(format!("config: {e}")))?;
+        fields.insert("gamma".into(), gamma(config.gamma));
+        Ok(Config { inner: config, fields })
+    }
+
+    /// The library's config.
+    pub fn inner(&self) -> &InteractionConfig {
+        &self.inner
+    }
 }
 
 /// `config`'s fields as a dict, in the library's order, as a config file
 /// has them (through JSON, so that 0.001 s reads 0.001, not its f32's
-/// digits).
+/// digits), but γ as the package spells it everywhere ([`gamma`]).
 fn as_dict<'py>(py: Python<'py>, config: &InteractionConfig) -> PyResult<Bound<'py, PyDict>> {
-    Ok(crate::runs::to_python(py, config)?.cast_into::<PyDict>()?)
+    let dict = crate::runs::to_python(py, config)?.cast_into::<PyDict>()?;
+    dict.set_item("gamma", pythonize::pythonize(py, &gamma(config.gamma))?)?;
+    Ok(dict)
+}
+
+/// γ as the package spells it, for objects, replays and configs alike:
+/// `"auto"`, or a number of N/m (a config file's `"Auto"` and
+/// `{"Fixed": n}` are read too).
+fn gamma(mode: GammaMode) -> serde_json::Value {
+    match mode {
+        GammaMode::Auto => "auto".into(),
+        // Through its shortest text, as the rest: 380 reads 380.0.
+        GammaMode::Fixed(n) => {
+            n.to_string().parse::<f64>().map_or(serde_json::Value::Null, |n| n.into())
+        }
+    }
 }
 
 /// The config of `dict`'s fields, checked: a field of the wrong type or an
@@ -43,14 +79,14 @@ impl Config {
                 dict.set_item(key, value)?;
             }
         }
-        Ok(Config { inner: from_dict(&dict)? })
+        Config::new_checked(from_dict(&dict)?)
     }
 
     /// A method's config (`coulomb`, `thesis`, `kinematic`, `heuristic`).
     #[staticmethod]
     fn for_method(method: &str) -> PyResult<Self> {
         let method: Method = crate::runs::method(method)?;
-        Ok(Config { inner: method.config(InteractionConfig::default()) })
+        Config::new_checked(method.config(InteractionConfig::default()))
     }
 
     /// Every field and its value, as in a config file.
@@ -67,13 +103,14 @@ impl Config {
                 dict.set_item(key, value)?;
             }
         }
-        Ok(Config { inner: from_dict(&dict)? })
+        Config::new_checked(from_dict(&dict)?)
     }
 
     fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        as_dict(py, &self.inner)?.get_item(name)?.ok_or_else(|| {
+        let value = self.fields.get(name).ok_or_else(|| {
             pyo3::exceptions::PyAttributeError::new_err(format!("Config has no field {name}"))
-        })
+        })?;
+        Ok(pythonize::pythonize(py, value)?)
     }
 
     fn __setattr__(
@@ -83,7 +120,7 @@ impl Config {
     ) -> PyResult<()> {
         let dict = as_dict(name.py(), &self.inner)?;
         dict.set_item(name, value)?;
-        self.inner = from_dict(&dict)?;
+        *self = Config::new_checked(from_dict(&dict)?)?;
         Ok(())
     }
 

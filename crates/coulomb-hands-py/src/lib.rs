@@ -145,6 +145,7 @@ pub(crate) fn bench_error(e: LibBenchError) -> PyErr {
     match e {
         LibBenchError::World(e) => world_error(e),
         LibBenchError::Run(e) => run_error(e),
+        e @ LibBenchError::Options { .. } => ArgumentError::new_err(e.to_string()),
         e => BenchError::new_err(e.to_string()),
     }
 }

@@ -12,7 +12,7 @@ use coulomb_hands::run::bench::{self as lib_bench, BenchOptions};
 use coulomb_hands::run::replay::{GraspObject, ReplayOptions, replay_file};
 use coulomb_hands::run::scenario::{Scenario, ScenarioReports};
 use coulomb_hands::scene::Scene;
-use coulomb_hands::{GammaMode, Method};
+use coulomb_hands::Method;
 use glam::Vec3;
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -65,22 +65,8 @@ fn replay<'py>(
         .map(|o| o.parse::<GraspObject>())
         .transpose()
         .map_err(|e| GraspObjectError::new_err(e.to_string()))?;
-    let gamma = match gamma {
-        None => defaults.gamma,
-        Some(g) => match g.extract::<String>() {
-            Ok(t) if t == "auto" => GammaMode::Auto,
-            Ok(t) => {
-                return Err(ArgumentError::new_err(format!(
-                    "gamma: a number or \"auto\", got {t:?}"
-                )));
-            }
-            Err(_) => GammaMode::Fixed(g.extract()?),
-        },
-    };
+    let gamma = gamma.map_or(Ok(defaults.gamma), crate::world::gamma)?;
     let grace = grace.unwrap_or(defaults.grace);
-    if !(grace.is_finite() && grace >= 0.0) {
-        return Err(ArgumentError::new_err(format!("grace: must be ≥ 0 s, got {grace}")));
-    }
     let device = device.map(|d| crate::arrays::vec3(d, "device")).transpose()?;
     let method = self::method(method)?;
     let summary = py.detach(|| {
@@ -191,18 +177,6 @@ fn run_bench<'py>(
     mujoco: Option<PathBuf>,
     objects: Vec<usize>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    if steps == 0 || !(1..=BenchOptions::MAX_BOXES).contains(&boxes) {
-        let why = format!(
-            "steps ≥ 1 and boxes in 1..={}, got {steps} and {boxes}",
-            BenchOptions::MAX_BOXES
-        );
-        return Err(ArgumentError::new_err(why));
-    }
-    let scenes = lib_bench::HELD..=lib_bench::MAX_OBJECTS;
-    if let Some(bad) = objects.iter().find(|n| !scenes.contains(n)) {
-        let why = format!("objects: each in {}..={}, got {bad}", scenes.start(), scenes.end());
-        return Err(ArgumentError::new_err(why));
-    }
     let options = BenchOptions { steps, boxes, tower, mujoco, objects };
     let report = py.detach(|| lib_bench::run(&options, &mut |_| {}));
     to_python(py, &report.map_err(bench_error)?)

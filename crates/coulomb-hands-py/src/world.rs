@@ -3,9 +3,7 @@
 use crate::arrays::{self, points_array, quats_array, values_array};
 use crate::config::Config;
 use crate::{ArgumentError, LayoutError, SkeletonError, world_error};
-use coulomb_hands::input::convert::Conversion;
-use coulomb_hands::input::layouts::{self, Layout};
-use coulomb_hands::input::skeleton;
+use coulomb_hands::input::layouts::{self, JointsError, Layout};
 use coulomb_hands::run::bench;
 use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape, Scene};
@@ -30,13 +28,7 @@ pub struct World {
 
 /// `left` or `right`.
 pub fn side(name: &str) -> PyResult<Side> {
-    match name {
-        "left" => Ok(Side::Left),
-        "right" => Ok(Side::Right),
-        _ => Err(ArgumentError::new_err(format!(
-            "side: expected \"left\" or \"right\", got {name:?}"
-        ))),
-    }
+    name.parse().map_err(|e| ArgumentError::new_err(format!("side: {e}")))
 }
 
 /// A material of the library's table by name.
@@ -48,16 +40,13 @@ fn material(object: &str, name: &str) -> PyResult<Material> {
     })
 }
 
-/// An object's own γ: a number (N/m) or `"auto"`.
-fn gamma(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<GammaMode>> {
-    let Some(value) = value else { return Ok(None) };
-    if let Ok(text) = value.extract::<String>() {
-        return match text.as_str() {
-            "auto" => Ok(Some(GammaMode::Auto)),
-            _ => Err(ArgumentError::new_err(format!("gamma: a number or \"auto\", got {text:?}"))),
-        };
+/// A γ argument: a number (N/m) or `"auto"`, as the command line's
+/// `--gamma` takes it; a number the world checks where it uses it.
+pub fn gamma(value: &Bound<'_, PyAny>) -> PyResult<GammaMode> {
+    match value.extract::<String>() {
+        Ok(text) => text.parse().map_err(|e| ArgumentError::new_err(format!("gamma: {e}"))),
+        Err(_) => Ok(GammaMode::Fixed(value.extract::<f32>()?)),
     }
-    Ok(Some(GammaMode::Fixed(value.extract::<f32>()?)))
 }
 
 /// A rotation, x, y, z, w, or none (unturned).
@@ -96,7 +85,7 @@ impl World {
     #[new]
     #[pyo3(signature = (config = None))]
     fn new(config: Option<Config>) -> PyResult<Self> {
-        let config = config.map_or_else(InteractionConfig::default, |c| c.inner);
+        let config = config.map_or_else(InteractionConfig::default, |c| *c.inner());
         Ok(World { world: InteractionWorld::new(config).map_err(world_error)? })
     }
 
@@ -118,8 +107,8 @@ impl World {
 
     /// The settings the world was made with.
     #[getter]
-    fn config(&self) -> Config {
-        Config { inner: *self.world.config() }
+    fn config(&self) -> PyResult<Config> {
+        Config::new_checked(*self.world.config())
     }
 
     /// Simulated time (s).
@@ -186,7 +175,7 @@ impl World {
             inertia: self::inertia(inertia)?,
             ..ObjectDesc::cuboid(name, size, mass, arrays::vec3(position, "position")?)
         };
-        self.add(desc, material, self::gamma(gamma)?)
+        self.add(desc, material, gamma.map(self::gamma).transpose()?)
     }
 
     /// A sphere of `radius` (m) and `mass` (kg); returns its id.
@@ -206,11 +195,10 @@ impl World {
     ) -> PyResult<u32> {
         let at = arrays::vec3(position, "position")?;
         let desc = ObjectDesc {
-            shape: ShapeDesc::Sphere { radius },
             inertia: self::inertia(inertia)?,
-            ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at)
+            ..ObjectDesc::sphere(name, radius, mass, at)
         };
-        self.add(desc, material, self::gamma(gamma)?)
+        self.add(desc, material, gamma.map(self::gamma).transpose()?)
     }
 
     /// A mesh from an OBJ, STL, glTF or GLB file, filled with boxes of side
@@ -262,7 +250,7 @@ impl World {
             rotation: self::rotation(rotation)?,
             ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at)
         };
-        self.add(desc, material, self::gamma(gamma)?)
+        self.add(desc, material, gamma.map(self::gamma).transpose()?)
     }
 
     /// A scene file's ground, statics, objects and towers; returns the ids
@@ -325,11 +313,13 @@ impl World {
                     .collect::<PyResult<Vec<Quat>>>()
             })
             .transpose()?;
-        let (id, given) = (i64::from(hand), (radii.as_deref(), orientations.as_deref()));
-        let tracked = layouts::from_layout(layout, id, side, &positions, given.0, given.1)
-            .map_err(|e| LayoutError::new_err(e.to_string()))?;
-        let pose = skeleton::hand_pose(&tracked, &Conversion::identity())
-            .map_err(|e| SkeletonError::new_err(e.to_string()))?;
+        let given = (radii.as_deref(), orientations.as_deref());
+        let pose = layouts::hand_pose_from_joints(layout, hand, side, &positions, given.0, given.1)
+            .map_err(|e| match e {
+                JointsError::Layout(e) => LayoutError::new_err(e.to_string()),
+                JointsError::Skeleton(e) => SkeletonError::new_err(e.to_string()),
+                JointsError::Pose(e) => world_error(e.into()),
+            })?;
         self.world.set_hand_pose(HandId(hand), &pose).map_err(world_error)
     }
 

@@ -23,7 +23,7 @@ GAMMA = 350.0
 def pinched_world(mass: float) -> tuple[ch.World, int]:
     """A 42 mm wooden box between a still thumb and index tip, each pressed 2.5 mm in,
     no ground under it."""
-    world = ch.World(ch.Config(gamma={"Fixed": GAMMA}))
+    world = ch.World(ch.Config(gamma=GAMMA))
     box = world.add_box("box", [SIDE] * 3, mass, CENTRE)
     hand = world.add_hand("right")
     world.set_hand_pose(hand, pinch(CENTRE, SIDE / 2, 0.0025))

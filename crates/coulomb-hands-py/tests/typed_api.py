@@ -21,8 +21,10 @@ def tracked_fist(world: ch.World, hand: int) -> npt.NDArray[np.float64]:
 
 
 def run() -> float:
-    config: ch.Config = ch.Config(dt=0.001, gamma={"Fixed": 380.0}).replace(force_cap=True)
-    assert config.to_dict()["gamma"] == {"Fixed": 380.0}
+    config: ch.Config = ch.Config(dt=0.001, gamma=380.0).replace(force_cap=True)
+    assert config.to_dict()["gamma"] == 380.0 and config.gamma == 380.0
+    assert ch.Config(gamma={"Fixed": 380.0}).gamma == 380.0
+    assert ch.Config(gamma="Auto").gamma == ch.Config(gamma="auto").gamma == "auto"
     assert ch.Config.for_method("thesis").kinetic == "Thesis"
     world = ch.World(config)
     world.add_ground(0.0, 0.5)

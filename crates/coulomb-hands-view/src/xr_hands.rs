@@ -2,9 +2,9 @@
 //!
 //! Each frame, bevy_mod_xr's hand trackers hold the 26 joints the runtime
 //! located (bevy_mod_openxr fills them, with the `openxr` feature: see
-//! `crate::openxr`). Here they become a tracked hand by the core's
-//! OpenXR layout ([`coulomb_hands::input::layouts::from_openxr`]), then the skeletal hand
-//! ([`coulomb_hands_bevy::input::openxr_sample`]), written to the input of
+//! `crate::openxr`). Here they become the skeletal hand by the core's
+//! OpenXR layout ([`coulomb_hands_bevy::input::openxr_sample`], through
+//! [`coulomb_hands::input::layouts::hand_pose_from_joints`]), written to the input of
 //! the app hand of that side (with [`HandDriver::Xr`]). The hand then
 //! touches objects only through the friction contacts, like any tracked
 //! hand.

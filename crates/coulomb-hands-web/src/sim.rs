@@ -6,10 +6,9 @@
 use crate::arrays;
 use coulomb_hands::files::NoFiles;
 use coulomb_hands::hand::rig::HandRig;
-use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::layouts::{self, Layout};
 use coulomb_hands::input::playback::DEFAULT_GRACE;
-use coulomb_hands::input::{recording, skeleton};
+use coulomb_hands::input::recording;
 use coulomb_hands::run::closing::Closings;
 use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::run::drive::{Driver, Observer, PoseFn};
@@ -73,11 +72,7 @@ pub struct Sim {
 
 /// A hand side by name.
 pub fn side(name: &str) -> Result<Side, Error> {
-    match name {
-        "left" => Ok(Side::Left),
-        "right" => Ok(Side::Right),
-        _ => Err(format!("side: expected \"left\" or \"right\", got {name:?}")),
-    }
+    name.parse().map_err(|e| format!("side: {e}"))
 }
 
 /// The config from JSON text: any [`InteractionConfig`] fields, the others
@@ -303,15 +298,10 @@ impl Sim {
         if radii.len() != count {
             return Err(format!("radii: expected {count} numbers (webxr), got {}", radii.len()));
         }
-        let tracked = text(layouts::from_layout(
-            Layout::WebXr,
-            i64::from(hand),
-            side,
-            &positions,
-            Some(radii),
-            quats.as_deref(),
-        ))?;
-        let pose = text(skeleton::hand_pose(&tracked, &Conversion::identity()))?;
+        let webxr = Layout::WebXr;
+        let given = (Some(radii), quats.as_deref());
+        let pose =
+            text(layouts::hand_pose_from_joints(webxr, hand, side, &positions, given.0, given.1))?;
         text(self.world_mut().set_hand_pose(HandId(hand), &pose))
     }
 

@@ -86,6 +86,26 @@ impl BenchOptions {
     /// per bone of a hand, each pressed by that bone of both hands.
     pub const MAX_BOXES: usize = BONES_PER_HAND;
 
+    /// Checks the options a run needs: at least one step, 1 to
+    /// [`Self::MAX_BOXES`] boxes, and each cluttered scene's objects in
+    /// [`HELD`]`..=`[`MAX_OBJECTS`]. [`run`] checks them first.
+    pub fn validate(&self) -> Result<(), BenchError> {
+        let fail = |field, reason| Err(BenchError::Options { field, reason });
+        if self.steps == 0 {
+            return fail("steps", "must be at least 1, got 0".into());
+        }
+        if !(1..=Self::MAX_BOXES).contains(&self.boxes) {
+            return fail(
+                "boxes",
+                format!("must be in 1..={}, got {}", Self::MAX_BOXES, self.boxes),
+            );
+        }
+        match self.objects.iter().find(|n| !(HELD..=MAX_OBJECTS).contains(n)) {
+            Some(bad) => fail("objects", format!("each in {HELD}..={MAX_OBJECTS}, got {bad}")),
+            None => Ok(()),
+        }
+    }
+
     /// The steps a run takes, for a progress bar: the sweep's worlds and
     /// the reference scene's two (MuJoCo's steps not counted).
     pub fn total_steps(&self) -> u64 {
@@ -102,6 +122,14 @@ const ONE_SECOND: usize = 1000;
 /// Why a bench run failed.
 #[derive(Debug, thiserror::Error)]
 pub enum BenchError {
+    /// An option out of its range ([`BenchOptions::validate`]).
+    #[error("{field}: {reason}")]
+    Options {
+        /// The option: `steps`, `boxes` or `objects`.
+        field: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A scene was rejected (never for the shipped scenes).
     #[error(transparent)]
     World(#[from] WorldError),
@@ -141,6 +169,7 @@ pub fn run_with(
     clock: &dyn Clock,
     progress: &mut dyn FnMut(u64),
 ) -> Result<BenchReport, BenchError> {
+    options.validate()?;
     if let Some(python) = &options.mujoco {
         mujoco::check(python)?;
     }
@@ -462,6 +491,29 @@ mod tests {
         assert_eq!(linear_fit(&[(1.0, 1.0)]), None);
         assert_eq!(linear_fit(&[(1.0, 1.0), (1.0, 2.0)]), None);
         assert_eq!(linear_fit(&[(1.0, f64::NAN), (2.0, 2.0)]), None);
+    }
+
+    #[test]
+    fn options_out_of_range_are_named() {
+        let ok = BenchOptions { steps: 10, boxes: 3, tower: false, mujoco: None, objects: vec![] };
+        assert!(ok.validate().is_ok());
+        let error = |o: BenchOptions| o.validate().unwrap_err().to_string();
+        assert_eq!(
+            error(BenchOptions { steps: 0, ..ok.clone() }),
+            "steps: must be at least 1, got 0"
+        );
+        let many = BenchOptions::MAX_BOXES + 1;
+        assert!(
+            error(BenchOptions { boxes: many, ..ok.clone() }).starts_with("boxes: must be in 1..=")
+        );
+        assert!(error(BenchOptions { boxes: 0, ..ok.clone() }).starts_with("boxes"));
+        let few = BenchOptions { objects: vec![HELD, HELD - 1], ..ok.clone() };
+        assert_eq!(
+            error(few),
+            format!("objects: each in {HELD}..={MAX_OBJECTS}, got {}", HELD - 1)
+        );
+        let more = BenchOptions { objects: vec![MAX_OBJECTS + 1], ..ok };
+        assert!(error(more).starts_with("objects"));
     }
 
     #[test]

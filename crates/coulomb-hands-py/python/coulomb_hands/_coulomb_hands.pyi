@@ -95,8 +95,10 @@ class Events(TypedDict):
 
 class Config:
     """A world's settings: `InteractionConfig`'s fields with the names and values of
-    config files (the book's config page), e.g. `Config(dt=0.002, gamma="Auto")` or
-    `Config(gamma={"Fixed": 300.0}, patch={"samples": 5, ...})`. Checked as the library
+    config files (the book's config page), e.g. `Config(dt=0.002, gamma="auto")` or
+    `Config(gamma=300.0, patch={"samples": 5, ...})`; `gamma` is spelled as everywhere in
+    the package, "auto" or a number of N/m (a config file's "Auto" and {"Fixed": 300.0} are
+    read too). Checked as the library
     checks them: a bad, mistyped or unknown field raises `ConfigError` naming it, and a
     rejected change leaves the config as it was."""
 
@@ -104,7 +106,7 @@ class Config:
     gravity: list[float]
     contact_offset: float
     release_offset: float
-    gamma: Any
+    gamma: Gamma
     kinetic: str
     patch: dict[str, Any]
     damping_ratio: Optional[float]
