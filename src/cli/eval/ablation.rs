@@ -1,10 +1,9 @@
 //! `eval ablation`: the thesis's law as written, given this crate's
 //! departures back one at a time.
 
-use super::options::{ConditionArgs, DrawArgs, StrategiesArg};
+use super::options::{AblationSize, ConditionArgs, DrawArgs, StrategiesArg};
 use super::{ci, shows_progress, with_bar};
 use crate::cli::Outcome;
-use crate::cli::args::count;
 use crate::cli::options::JsonOutput;
 use coulomb_hands::eval::ablation::{Ablation, AblationOptions, ablation, configurations};
 
@@ -12,12 +11,8 @@ use coulomb_hands::eval::ablation::{Ablation, AblationOptions, ablation, configu
 /// which of them let the users carry the cube.
 #[derive(clap::Args)]
 pub struct AblationArgs {
-    /// Synthetic users.
-    #[arg(long, default_value_t = AblationOptions::USERS, value_parser = count())]
-    users: usize,
-    /// Trials per user.
-    #[arg(long, default_value_t = AblationOptions::TRIALS, value_parser = count())]
-    trials: usize,
+    #[command(flatten)]
+    size: AblationSize,
     #[command(flatten)]
     draw: DrawArgs,
     #[command(flatten)]
@@ -34,8 +29,8 @@ impl AblationArgs {
         let show = shows_progress(&self.output);
         let (noise, unit) = self.draw.noise();
         let options = AblationOptions {
-            users: self.users,
-            trials: self.trials,
+            users: self.size.users,
+            trials: self.size.trials,
             seed: self.draw.seed,
             strategies: self.strategies.strategy,
             noise,

@@ -1,10 +1,9 @@
 //! `eval accuracy`: the positioning-accuracy study, printed beside the
 //! thesis's Table 5.2.
 
-use super::options::{ConditionArgs, DrawArgs, MethodsArg, StrategiesArg};
+use super::options::{AccuracySize, ConditionArgs, DrawArgs, MethodsArg, StrategiesArg};
 use super::{num, shows_progress, with_bar};
 use crate::cli::Outcome;
-use crate::cli::args::count;
 use crate::cli::options::JsonOutput;
 use coulomb_hands::RunError;
 use coulomb_hands::eval::{AccuracyOptions, AccuracyStudy, accuracy};
@@ -30,12 +29,8 @@ impl AccuracyArgs {
 /// What `eval accuracy` and `report` run of the accuracy study.
 #[derive(clap::Args)]
 pub struct StudyArgs {
-    /// Synthetic users.
-    #[arg(long, default_value_t = AccuracyOptions::USERS, value_parser = count())]
-    users: usize,
-    /// Trials per user.
-    #[arg(long, default_value_t = AccuracyOptions::TRIALS, value_parser = count())]
-    trials: usize,
+    #[command(flatten)]
+    size: AccuracySize,
     #[command(flatten)]
     draw: DrawArgs,
     #[command(flatten)]
@@ -51,8 +46,8 @@ impl StudyArgs {
     pub fn options(self) -> AccuracyOptions {
         let (noise, unit) = self.draw.noise();
         AccuracyOptions {
-            users: self.users,
-            trials: self.trials,
+            users: self.size.users,
+            trials: self.size.trials,
             seed: self.draw.seed,
             methods: self.methods.method,
             strategies: self.strategies.strategy,

@@ -3,7 +3,10 @@
 //! users (`eval accuracy`, `eval ablation`), the methods compared (`eval
 //! accuracy`, `eval sweep`) and the users' strategies (all of them).
 
+use crate::cli::args::count;
 use coulomb_hands::Method;
+use coulomb_hands::eval::ablation::AblationOptions;
+use coulomb_hands::eval::sweep::SweepOptions;
 use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, trial};
 use std::fmt::Display;
 use std::path::PathBuf;
@@ -35,6 +38,30 @@ impl ConditionArgs {
         Conditions { perception, noise_from, noise_unit, threads }
     }
 }
+
+/// How many synthetic users a study draws, and how many trials each runs,
+/// written once for `eval accuracy` (and `report`), `eval ablation` and
+/// `eval sweep`, each struct with its study's defaults. (A struct generic
+/// over its defaults would not do: clap keeps a default's text in a static,
+/// which all its instances would share.)
+macro_rules! size_args {
+    ($name:ident, $options:ty) => {
+        #[doc = concat!("How many users and trials, by default `", stringify!($options), "`'s.")]
+        #[derive(clap::Args)]
+        pub struct $name {
+            /// Synthetic users, drawn from each seed.
+            #[arg(long, default_value_t = <$options>::USERS, value_parser = count())]
+            pub users: usize,
+            /// Trials per user.
+            #[arg(long, default_value_t = <$options>::TRIALS, value_parser = count())]
+            pub trials: usize,
+        }
+    };
+}
+
+size_args!(AccuracySize, AccuracyOptions);
+size_args!(AblationSize, AblationOptions);
+size_args!(SweepSize, SweepOptions);
 
 /// One draw of users and their tracker's noise: `eval accuracy` (and
 /// `report`) and `eval ablation`, whose users are drawn alike.

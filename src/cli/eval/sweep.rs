@@ -1,10 +1,9 @@
 //! `eval sweep`: the accuracy study at several strengths of real
 //! tracking noise and on several seeds' users, with confidence intervals.
 
-use super::options::{ConditionArgs, MethodsArg, StrategiesArg, comma_list, scale};
+use super::options::{ConditionArgs, MethodsArg, StrategiesArg, SweepSize, comma_list, scale};
 use super::{ci, num, shows_progress, with_bar};
 use crate::cli::Outcome;
-use crate::cli::args::count;
 use crate::cli::options::JsonOutput;
 use coulomb_hands::eval::NoiseUnit;
 use coulomb_hands::eval::stats::Estimate;
@@ -20,12 +19,8 @@ static NOISE: LazyLock<String> = LazyLock::new(|| comma_list(&SweepOptions::NOIS
 /// users, with 95 % confidence intervals.
 #[derive(clap::Args)]
 pub struct SweepArgs {
-    /// Synthetic users per seed.
-    #[arg(long, default_value_t = SweepOptions::USERS, value_parser = count())]
-    users: usize,
-    /// Trials per user.
-    #[arg(long, default_value_t = SweepOptions::TRIALS, value_parser = count())]
-    trials: usize,
+    #[command(flatten)]
+    size: SweepSize,
     /// Seeds, comma-separated: each draws its own users and trials.
     #[arg(long, value_delimiter = ',', default_value = SEEDS.as_str())]
     seeds: Vec<u64>,
@@ -54,8 +49,8 @@ impl SweepArgs {
         let show = shows_progress(&self.output);
         let (noise, unit) = NoiseUnit::choose(self.noise, self.noise_mm);
         let options = SweepOptions {
-            users: self.users,
-            trials: self.trials,
+            users: self.size.users,
+            trials: self.size.trials,
             seeds: self.seeds,
             noise,
             methods: self.methods.method,
