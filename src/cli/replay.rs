@@ -23,7 +23,8 @@ pub struct ReplayArgs {
     #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
     object_at_grasp: Option<GraspObject>,
     /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
-    #[arg(long, default_value_t = GammaMode::default(), value_parser = clap::value_parser!(GammaMode))]
+    #[arg(long, default_value_t = GammaMode::default(),
+          value_parser = clap::value_parser!(GammaMode))]
     gamma: GammaMode,
     #[command(flatten)]
     method: MethodChoice,

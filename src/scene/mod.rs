@@ -11,6 +11,7 @@
 //! until [`crate::InteractionWorld`] adds it, after checking it whole.
 
 pub mod file;
+pub mod gamma;
 pub mod material;
 pub mod mesh;
 pub mod object;

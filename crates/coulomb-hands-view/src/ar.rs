@@ -108,8 +108,17 @@ impl Plugin for ArPlugin {
     fn build(&self, app: &mut App) {
         embedded_asset!(app, "shaders/pass_through.wgsl");
         app.add_plugins(MaterialPlugin::<PassThroughMaterial>::default())
-            .add_systems(Startup, spawn_backdrop)
+            .add_systems(Startup, (spawn_backdrop, hide_grids))
             .add_systems(PostUpdate, mask_real_things);
+    }
+}
+
+/// No grid on the scenery: it is the real one's mask, and the real floor
+/// shows through it.
+fn hide_grids(store: Option<ResMut<GizmoConfigStore>>) {
+    let grids = store.and_then(|s| s.into_inner().get_config_mut::<crate::stage::GridGizmos>());
+    if let Some((config, _)) = grids {
+        config.enabled = false;
     }
 }
 

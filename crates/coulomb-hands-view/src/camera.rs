@@ -10,6 +10,7 @@
 //! equal the tracker's camera distance (ICD), or the virtual objects sit at
 //! the wrong depth against the real image.
 
+use crate::grasp_view::GraspSamples;
 use crate::head::HeadMount;
 use crate::keys;
 use crate::sets::ViewerSystems;
@@ -29,6 +30,7 @@ use coulomb_hands_bevy::prelude::*;
 const TURN_PER_PIXEL: f32 = 0.005;
 /// Zoom factor per wheel line.
 const ZOOM_PER_LINE: f32 = 0.1;
+pub use crate::grasp_view::DEFAULT_PITCH;
 
 /// Where the camera looks from.
 #[derive(Component, Debug, Clone, Copy)]
@@ -59,7 +61,7 @@ impl Default for Orbit {
         Orbit {
             focus: Vec3::new(0.0, 0.05, 0.0),
             yaw: 0.0,
-            pitch: 0.55,
+            pitch: DEFAULT_PITCH,
             distance: 0.55,
             framed: false,
         }
@@ -157,13 +159,17 @@ pub fn spawn_camera(
     }
 }
 
-/// The orbit the camera starts from: the start view's angles (or the
-/// default's), looking at the run's volume from where it fits the view
-/// (or from the start view's distance, if given).
+/// The orbit the camera starts from: the start view's angles (or those
+/// that show the run's grasps, or the default's), looking at the run's
+/// volume from where it fits the view (or from the start view's distance,
+/// if given).
 fn start_orbit(framing: Option<&Framing>, start: Option<&StartView>) -> Orbit {
     let mut orbit = Orbit::default();
     if let Some(f) = framing {
         (orbit.focus, orbit.distance, orbit.framed) = (f.center, f.distance(), true);
+        if let Some((yaw, pitch)) = f.view {
+            (orbit.yaw, orbit.pitch) = (yaw, pitch);
+        }
     }
     if let Some(v) = start {
         (orbit.yaw, orbit.pitch) = (v.yaw_deg.to_radians(), v.pitch_deg.to_radians());
@@ -198,13 +204,17 @@ pub fn fit_eyes(
 }
 
 /// The volume a run's hands and objects take up from start to end: a
-/// sphere about their bounding box, which the camera keeps in view.
+/// sphere about their bounding box, which the camera keeps in view; and
+/// the direction that shows its grasps ([`crate::grasp_view`]).
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
 pub struct Framing {
     /// The box's centre (world, m).
     pub center: Vec3,
     /// Half the box's diagonal (m).
     pub radius: f32,
+    /// Yaw and pitch (rad) from which the most of the hands' pressing
+    /// contacts are in sight; `None` for a run with none.
+    pub view: Option<(f32, f32)>,
 }
 
 /// Steps between two looks at the run (10 ms at the default 1 ms step).
@@ -220,10 +230,19 @@ impl Framing {
     /// the viewer will show). A run with no end (a scene, live hands) is
     /// framed as it starts. `None` when there is nothing in it yet.
     pub fn of_run(source: &Source, method: Method) -> Result<Option<Framing>, LoadError> {
+        Ok(Framing::survey(source, method)?.0)
+    }
+
+    /// [`Framing::of_run`], with the contacts its view was chosen by.
+    pub fn survey(
+        source: &Source,
+        method: Method,
+    ) -> Result<(Option<Framing>, GraspSamples), LoadError> {
         let mut physics = source.build(method)?;
         let dt = f64::from(physics.world().config().dt);
         let steps = source.duration().map_or(0, |d| (d / dt).round() as usize);
         let mut bounds = Bounds::default();
+        let mut grasps = GraspSamples::default();
         bounds.add_world(physics.world());
         for i in 0..steps {
             if !physics.step() {
@@ -231,10 +250,15 @@ impl Framing {
             }
             if i % FRAMING_EVERY == 0 {
                 bounds.add_world(physics.world());
+                grasps.add(physics.world());
             }
         }
         bounds.add_world(physics.world());
-        Ok(bounds.framing())
+        let framing = bounds.framing().map(|f| {
+            let center = coulomb_hands_bevy::convert::to_core_vec3(f.center);
+            Framing { view: grasps.view(center, f.distance()), ..f }
+        });
+        Ok((framing, grasps))
     }
 
     /// How far from its centre the camera sees the whole sphere (m).
@@ -295,6 +319,7 @@ impl Bounds {
         (self.min.cmple(self.max).all()).then(|| Framing {
             center: (self.min + self.max) / 2.0,
             radius: ((self.max - self.min).length() / 2.0).max(0.05),
+            view: None,
         })
     }
 }

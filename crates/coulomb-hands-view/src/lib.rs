@@ -22,6 +22,7 @@ pub mod ar;
 pub mod arrows;
 pub mod camera;
 pub mod display;
+pub mod grasp_view;
 pub mod hand_visual;
 pub mod head;
 pub mod hud;

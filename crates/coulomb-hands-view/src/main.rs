@@ -51,8 +51,9 @@ struct Args {
     /// (40 mm, the Leap's camera distance, for its image pass-through) or millimetres.
     #[arg(long, value_name = "ipd|leap|MM")]
     stereo: Option<Stereo>,
-    /// Where the camera starts: yaw and pitch in degrees, and a distance in metres (default
-    /// 0,32 at the distance that frames the whole run).
+    /// Where the camera starts: yaw and pitch in degrees, and a distance in metres (default:
+    /// the direction that shows the most of the run's grasps, else 0,32, at the distance that
+    /// frames the whole run).
     #[arg(long, value_name = "YAW,PITCH[,DISTANCE]", conflicts_with = "head_mounted")]
     view: Option<StartView>,
     /// With a Leap recording made on a headset (§3.8.1): the tracker's mount, dk2 (8 cm ahead

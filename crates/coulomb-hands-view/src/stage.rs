@@ -26,9 +26,29 @@ pub const BACKGROUND: Color = Color::srgb(0.09, 0.10, 0.13);
 #[derive(Component, Debug, Clone, Copy)]
 pub struct SceneryMesh;
 
-/// The static scenery drawn, for the world it belongs to.
+/// The static scenery drawn, for the world it belongs to, and the grids
+/// on its boxes' top faces.
 #[derive(Resource, Debug, Default)]
-pub struct Scenery(Vec<Entity>);
+pub struct Scenery(Vec<Entity>, Vec<Grid>);
+
+/// The lines drawn on a box's top face, so that a floor or a table reads
+/// as a surface and not as the background: the shaded face alone is one
+/// flat colour from edge to edge of the window.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Grid {
+    /// Its centre and orientation: the face's plane is the grid's x–y.
+    place: Isometry3d,
+    /// Cells along its x and y.
+    cells: UVec2,
+}
+
+/// A grid's cell (m): a hand's width, half a palm's length.
+const CELL: f32 = 0.05;
+/// The most a grid reaches from the run's centre (m): a desk, not a
+/// 10 m ground to the horizon.
+const GRID_REACH: f32 = 0.6;
+/// The grid's lines: lighter than the scenery, faint.
+const GRID: Color = Color::srgba(0.75, 0.80, 0.88, 0.35);
 
 /// The light: a sun from above one shoulder, with shadows, and a soft fill.
 pub fn setup_lights(mut commands: Commands) {
@@ -74,6 +94,7 @@ pub fn dress_objects(
 /// Draws the static scenery of a new world (the ground, a table).
 pub fn dress_scenery(
     physics: Option<Res<HandPhysics>>,
+    framing: Option<Res<crate::camera::Framing>>,
     mut replaced: MessageReader<HandPhysicsReplaced>,
     mut scenery: ResMut<Scenery>,
     mut meshes: ResMut<Assets<Mesh>>,
@@ -92,6 +113,75 @@ pub fn dress_scenery(
             (Mesh3d(meshes.add(mesh)), MeshMaterial3d(material.clone()), place, SceneryMesh);
         scenery.0.push(commands.spawn(entity).id());
     }
+    let around = framing.map_or(Vec3::ZERO, |f| f.center);
+    scenery.1 = top_faces(physics.world()).filter_map(|face| grid(face, around)).collect();
+}
+
+/// The grids' gizmos: hidden behind what stands on the floor, where the
+/// default group's (the arrows) are drawn over everything.
+#[derive(Default, Reflect, GizmoConfigGroup)]
+pub struct GridGizmos;
+
+/// Draws the grids on the scenery's top faces (AR turns them off: there
+/// the scenery is the real one's mask).
+pub fn draw_grids(scenery: Res<Scenery>, mut gizmos: Gizmos<GridGizmos>) {
+    for g in &scenery.1 {
+        gizmos.grid(g.place, g.cells, Vec2::splat(CELL), GRID).outer_edges();
+    }
+}
+
+/// A box's top face: its centre, its rotation (local y up), and its half
+/// extents along its own x and z (world, m).
+struct TopFace {
+    center: Vec3,
+    rotation: Quat,
+    half: Vec2,
+}
+
+/// The faces of the static boxes that face up (within 10°).
+fn top_faces(world: &InteractionWorld) -> impl Iterator<Item = TopFace> + '_ {
+    let objects: Vec<_> = world.object_ids().filter_map(|id| world.object_body(id)).collect();
+    world.physics().colliders.iter().filter_map(move |(_, c)| {
+        if c.parent().is_some_and(|body| objects.contains(&body)) {
+            return None;
+        }
+        let cuboid = c.shape().as_cuboid()?;
+        let h = convert::to_bevy_vec3(cuboid.half_extents);
+        let rotation = convert::to_bevy_quat(c.position().rotation);
+        // The box's axis nearest world up, and the face on its upper side.
+        let axes = [Vec3::X, Vec3::Y, Vec3::Z].map(|a| rotation * a);
+        let (i, up) =
+            (0..3).map(|i| (i, axes[i])).max_by(|a, b| a.1.y.abs().total_cmp(&b.1.y.abs()))?;
+        let up = up * up.y.signum();
+        if up.y < 10f32.to_radians().cos() {
+            return None;
+        }
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let center = convert::to_bevy_vec3(c.position().translation) + up * h[i];
+        let frame = Quat::from_mat3(&Mat3::from_cols(axes[j], up, up.cross(axes[j])));
+        Some(TopFace { center, rotation: frame, half: Vec2::new(h[j], h[k]) })
+    })
+}
+
+/// A face's grid: whole cells, within the face and within [`GRID_REACH`]
+/// of `around` (projected on the face); `None` for a face too small for
+/// one cell.
+fn grid(face: TopFace, around: Vec3) -> Option<Grid> {
+    let local = face.rotation.inverse() * (around - face.center);
+    let (lo, hi) = (-face.half, face.half);
+    let want = Vec2::new(local.x, local.z);
+    let min = (want - GRID_REACH).max(lo);
+    let max = (want + GRID_REACH).min(hi);
+    let cells = ((max - min) / CELL).floor();
+    if cells.min_element() < 1.0 {
+        return None;
+    }
+    let mid = (min + max) / 2.0;
+    // Just above the face, so the lines are not lost in its depth.
+    let center = face.center + face.rotation * Vec3::new(mid.x, 0.0005, mid.y);
+    // The grid lies in its x–y plane: turned so its y runs along the face's z.
+    let rotation = face.rotation * Quat::from_rotation_x(std::f32::consts::FRAC_PI_2);
+    Some(Grid { place: Isometry3d::new(center, rotation), cells: cells.as_uvec2() })
 }
 
 /// The stage's systems: lights, scenery and objects' meshes.
@@ -102,8 +192,10 @@ impl Plugin for StagePlugin {
     fn build(&self, app: &mut App) {
         crate::sets::configure(app);
         app.init_resource::<Scenery>()
+            .init_gizmo_group::<GridGizmos>()
             .add_systems(Startup, setup_lights)
-            .add_systems(Update, (dress_scenery, dress_objects).in_set(ViewerSystems::Draw));
+            .add_systems(Update, (dress_scenery, dress_objects).in_set(ViewerSystems::Draw))
+            .add_systems(Update, draw_grids.after(dress_scenery).in_set(ViewerSystems::Draw));
     }
 }
 

@@ -1,17 +1,19 @@
 //! The camera frames the whole run, headless: from grasp-lift's default
-//! view (behind and above the hand), the cube stays inside the view's field
-//! at every frame of the run, lifted and all, and F brings a camera that
-//! was turned and zoomed away back to that framing.
+//! view (the one that shows its grasp), the cube stays inside the view's
+//! field at every frame of the run, lifted and all, and F brings a camera
+//! that was turned and zoomed away back to that framing. For every shipped
+//! scenario, the default view has the hands' contacts in sight.
 
 use super::keys::press;
 use bevy::camera::PerspectiveProjection;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use coulomb_hands::pipeline::Method;
+use coulomb_hands::run::scenario::shipped;
 use coulomb_hands::scene::ObjectId;
-use coulomb_hands_bevy::convert::to_bevy_vec3;
+use coulomb_hands_bevy::convert::{to_bevy_vec3, to_core_vec3};
 use coulomb_hands_bevy::physics::HandPhysics;
-use coulomb_hands_view::camera::{CameraPlugin, Framing, Orbit};
+use coulomb_hands_view::camera::{CameraPlugin, DEFAULT_PITCH, Framing, Orbit};
 use coulomb_hands_view::headless_app;
 use coulomb_hands_view::source::{LoadOptions, Source};
 use std::time::Duration;
@@ -79,4 +81,35 @@ fn f_frames_the_run_again_after_the_camera_was_moved() {
     let back = orbit(&mut app);
     let same = (back.focus, back.yaw, back.pitch, back.distance);
     assert_eq!(same, (framed.focus, framed.yaw, framed.pitch, framed.distance));
+}
+
+#[test]
+fn every_shipped_scenario_s_default_view_has_its_contacts_in_sight() {
+    // In sight: on a line from the camera's eye that no palm, finger or the
+    // object itself crosses. Every scenario whose contacts the old fixed
+    // view (behind and above) had in sight has some in sight from its
+    // default view, and more scenarios than from the fixed view have a
+    // tenth or more in sight; grasp-lift's, whose cube the palm covered
+    // from behind, twice as many. (Contacts sandwiched between a flat hand
+    // and what rests on it are in sight from no view.)
+    let (mut seen, mut seen_before) = (0, 0);
+    for (name, _) in shipped() {
+        let source = Source::load(Some(name), &LoadOptions::default()).expect("shipped");
+        let (framing, grasps) = Framing::survey(&source, Method::Coulomb).expect("a run");
+        let framing = framing.expect("a volume");
+        let Some((yaw, pitch)) = framing.view else {
+            assert!(grasps.is_empty(), "{name}: contacts, but no view");
+            continue;
+        };
+        let (center, distance) = (to_core_vec3(framing.center), framing.distance());
+        let chosen = grasps.share_in_sight(center, distance, yaw, pitch);
+        let fixed = grasps.share_in_sight(center, distance, 0.0, DEFAULT_PITCH);
+        assert!(fixed == 0.0 || chosen > 0.0, "{name}: {chosen:.2} in sight, {fixed:.2} before");
+        (seen, seen_before) =
+            (seen + usize::from(chosen >= 0.1), seen_before + usize::from(fixed >= 0.1));
+        if *name == "grasp-lift" {
+            assert!(chosen > 2.0 * fixed, "grasp-lift: {chosen:.2} in sight, {fixed:.2} before");
+        }
+    }
+    assert!(seen > seen_before + 3, "{seen} scenarios with a tenth in sight, {seen_before} before");
 }

@@ -195,6 +195,29 @@ fn grasp_lift_stays_in_frame_see_through_then_opaque_with_force_arrows() {
     );
 }
 
+/// grasp-lift from its default view, the one that shows the grasp: while
+/// the hand holds the lifted cube, the cube shows between the fingers
+/// (teal pixels) with the red force arrows. From the fixed view it had
+/// before (behind and above), the palm covered the cube.
+#[test]
+fn grasp_lift_s_default_view_shows_the_held_cube() {
+    let dir = out_dir();
+    let (shown, fixed) = (dir.join("grasp-lift-default.png"), dir.join("grasp-lift-fixed.png"));
+    fresh(&[&shown, &fixed]);
+    for (path, view) in [(&shown, None), (&fixed, Some("--view=0,32"))] {
+        let shot = format!("--screenshot=2.5={}", path.display());
+        let mut args = vec!["grasp-lift", "--exit-after=2.5", &shot];
+        args.extend(view);
+        let (ok, stderr) = super::window::view(&args);
+        assert!(ok, "the viewer failed:\n{stderr}");
+    }
+    let read = |p: &Path| image::open(p).expect("a screenshot").to_rgb8();
+    let (shown, fixed) = (read(&shown), read(&fixed));
+    assert!(teal(&shown) > 1000, "the held cube shows: {} teal pixels", teal(&shown));
+    assert!(red(&shown) > 30, "with its force arrows: {} red pixels", red(&shown));
+    assert!(teal(&fixed) * 2 < teal(&shown), "{} teal pixels from behind", teal(&fixed));
+}
+
 /// The viewer's stderr and exit status for `args`, without a window.
 /// `display` is the `DISPLAY` to set, or none.
 pub fn refused(args: &[&std::ffi::OsStr], display: Option<&str>) -> String {
