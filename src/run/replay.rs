@@ -10,7 +10,7 @@ use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::input::recording::Recording;
 use crate::output::Session;
 use crate::pipeline::{InteractionConfig, InteractionWorld, Method, WorldError};
-use crate::scene::{GammaMode, ObjectDesc, ObjectId, Scene, ShapeDesc, StaticDesc};
+use crate::scene::{GammaMode, ObjectDesc, ObjectId, Scene, StaticDesc};
 use glam::Vec3;
 use std::path::Path;
 
@@ -255,13 +255,11 @@ impl GraspObject {
     /// The object, named `name`, centred at `at` (m), unturned: wood, as
     /// [`ObjectDesc::cuboid`] makes it.
     pub fn desc(&self, name: &str, at: Vec3) -> ObjectDesc {
-        let half = 0.5 * self.size;
-        let shape = if self.sphere {
-            ShapeDesc::Sphere { radius: half }
+        if self.sphere {
+            ObjectDesc::sphere(name, 0.5 * self.size, self.mass, at)
         } else {
-            ShapeDesc::Box { half_extents: Vec3::splat(half) }
-        };
-        ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, at) }
+            ObjectDesc::cuboid(name, Vec3::splat(self.size), self.mass, at)
+        }
     }
 }
 

@@ -391,11 +391,7 @@ impl Sim {
         material: &str,
     ) -> Result<u32, Error> {
         let at = arrays::vec3s(position, "position", 1)?[0];
-        let desc = ObjectDesc {
-            shape: ShapeDesc::Sphere { radius },
-            ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at)
-        };
-        self.add(desc, material)
+        self.add(ObjectDesc::sphere(name, radius, mass, at), material)
     }
 
     /// A mesh from an OBJ, STL, glTF or GLB file's bytes (`file` is its
