@@ -5,6 +5,7 @@
 use crate::arrays::{points_array, pose_dict};
 use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError, UnknownMethodError};
 use crate::{bench_error, run_error};
+use coulomb_hands::Method;
 use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, accuracy};
 use coulomb_hands::input::mediapipe::{self, Label};
 use coulomb_hands::input::{layouts, recording, skeleton};
@@ -12,7 +13,6 @@ use coulomb_hands::run::bench::{self as lib_bench, BenchOptions};
 use coulomb_hands::run::replay::{GraspObject, ReplayOptions, replay_file};
 use coulomb_hands::run::scenario::{Scenario, ScenarioReports};
 use coulomb_hands::scene::Scene;
-use coulomb_hands::Method;
 use glam::Vec3;
 use numpy::PyArray2;
 use pyo3::prelude::*;
