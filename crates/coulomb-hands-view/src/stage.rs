@@ -7,6 +7,7 @@ use bevy::prelude::*;
 use coulomb_hands::pipeline::InteractionWorld;
 use coulomb_hands_bevy::convert;
 use coulomb_hands_bevy::prelude::*;
+use rapier3d::geometry::Collider;
 
 /// Object colours, in the order objects were added: cool hues, so the
 /// skin-toned hand and the red force arrows stand out against them.
@@ -140,11 +141,7 @@ struct TopFace {
 
 /// The faces of the static boxes that face up (within 10°).
 fn top_faces(world: &InteractionWorld) -> impl Iterator<Item = TopFace> + '_ {
-    let objects: Vec<_> = world.object_ids().filter_map(|id| world.object_body(id)).collect();
-    world.physics().colliders.iter().filter_map(move |(_, c)| {
-        if c.parent().is_some_and(|body| objects.contains(&body)) {
-            return None;
-        }
+    static_colliders(world).filter_map(|c| {
         let cuboid = c.shape().as_cuboid()?;
         let h = convert::to_bevy_vec3(cuboid.half_extents);
         let rotation = convert::to_bevy_quat(c.position().rotation);
@@ -202,13 +199,20 @@ impl Plugin for StagePlugin {
 /// Every collider not on an object's body (the statics, each on a fixed
 /// body of its own), as meshes in the world.
 fn static_meshes(world: &InteractionWorld) -> Vec<(Transform, Mesh)> {
-    let objects: Vec<_> = world.object_ids().filter_map(|id| world.object_body(id)).collect();
-    let colliders = world.physics().colliders.iter();
-    colliders
-        .filter(|(_, c)| c.parent().is_none_or(|body| !objects.contains(&body)))
-        .flat_map(|(_, c)| {
+    static_colliders(world)
+        .flat_map(|c| {
             let place = convert::transform(c.position().translation, c.position().rotation);
             shapes::meshes(c.shape()).into_iter().map(move |(t, mesh)| (place * t, mesh))
         })
         .collect()
+}
+
+/// Every collider not on an object's body: the statics, each on a fixed
+/// body of its own.
+fn static_colliders(world: &InteractionWorld) -> impl Iterator<Item = &Collider> + '_ {
+    let objects: Vec<_> = world.object_ids().filter_map(|id| world.object_body(id)).collect();
+    let colliders = world.physics().colliders.iter();
+    colliders
+        .map(|(_, c)| c)
+        .filter(move |c| c.parent().is_none_or(|body| !objects.contains(&body)))
 }
