@@ -1,12 +1,11 @@
 //! `live`: the physics on a live Leap Motion stream, with a scene and an
 //! object to touch, optionally recorded.
 
-use super::args::{parse_vec3, positive};
+use super::args::positive;
 use super::options::{JsonOutput, SessionArgs};
 use super::{Outcome, print_objects};
 use coulomb_hands::InteractionConfig;
 use coulomb_hands::input::live::DEFAULT_URL;
-use coulomb_hands::run::replay::GraspObject;
 
 /// The default tracking time to run for (s).
 pub const SECONDS: f64 = 10.0;
@@ -22,17 +21,6 @@ pub struct LiveArgs {
     seconds: f64,
     #[command(flatten)]
     session: SessionArgs,
-    /// Put an object (see --object) with its centre here, "x,y,z" in metres.
-    #[arg(long, value_parser = parse_vec3)]
-    object_at: Option<glam::Vec3>,
-    /// The --object-at object: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere, wood.
-    #[arg(
-        long,
-        value_name = "SHAPE:SIZE_M:MASS_KG",
-        default_value = "box:0.04:0.05",
-        requires = "object_at"
-    )]
-    object: GraspObject,
     #[command(flatten)]
     output: JsonOutput,
 }
@@ -42,11 +30,13 @@ impl LiveArgs {
     pub fn run(self) -> Outcome {
         use coulomb_hands::input::convert::Conversion;
         use coulomb_hands::run::live::run_live;
+        if self.session.grasp_object().is_some() {
+            return Err("--object-at grasp needs a hand's closings, which a live stream does not \
+                        give: put the object at x,y,z"
+                .into());
+        }
         let scene = self.session.load_scene()?;
         let mut world = self.session.world(InteractionConfig::default(), scene.as_ref())?;
-        if let Some(at) = self.object_at {
-            world.add_object(&self.object.desc("object", at))?;
-        }
         let conversion = Conversion::leap_desktop(self.session.device);
         let (url, grace, seconds) = (&self.url, self.session.grace, self.seconds);
         let s = run_live(url, &mut world, conversion, grace, seconds, &mut [])?;

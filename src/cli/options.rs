@@ -9,6 +9,7 @@ use coulomb_hands::input::playback::DEFAULT_GRACE;
 use coulomb_hands::output::Session;
 use coulomb_hands::output::trace::TraceFile;
 use coulomb_hands::run::observe::TraceWriter;
+use coulomb_hands::run::replay::{GraspObject, ObjectPlace};
 use coulomb_hands::scene::Scene;
 use coulomb_hands::{InteractionWorld, Method, RunError};
 use std::path::PathBuf;
@@ -63,7 +64,8 @@ pub struct MethodChoice {
 
 /// What a run on tracked hands shares, recorded (`replay`) or live
 /// (`live`): where the tracker sits, how its gaps are bridged, the scene
-/// the hands work in, and where the session is recorded.
+/// the hands work in and the object put in it, and where the session is
+/// recorded.
 #[derive(clap::Args)]
 pub struct SessionArgs {
     /// Where the desktop device sits in the world, "x,y,z" in metres.
@@ -80,13 +82,41 @@ pub struct SessionArgs {
     /// that file reproduces the run bit for bit.
     #[arg(long)]
     pub record: Option<PathBuf>,
+    /// Put an object (see --object) at each closing of a hand ("grasp", held until the hand
+    /// grips it; not on a live stream), or once with its centre at "x,y,z" in metres.
+    #[arg(long, value_name = "grasp|X,Y,Z")]
+    pub object_at: Option<ObjectPlace>,
+    /// The --object-at object: SHAPE:SIZE_M:MASS_KG, SHAPE box (SIZE its side) or sphere
+    /// (SIZE its diameter), of wood.
+    #[arg(
+        long,
+        value_name = "SHAPE:SIZE_M:MASS_KG",
+        default_value = "box:0.04:0.05",
+        requires = "object_at"
+    )]
+    pub object: GraspObject,
+    /// The old spelling of `--object SHAPE:SIZE_M:MASS_KG --object-at grasp`, still read.
+    #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG", hide = true, conflicts_with = "object_at")]
+    pub object_at_grasp: Option<GraspObject>,
 }
 
 impl SessionArgs {
-    /// The `--scene` file, read: before anything else, so that a bad one
-    /// is the first error.
+    /// The `--scene` file, read before anything else, so that a bad one
+    /// is the first error; with the `--object-at x,y,z` object added.
     pub fn load_scene(&self) -> Result<Option<Scene>, RunError> {
-        Ok(self.scene.as_deref().map(Scene::load).transpose()?)
+        let mut scene = self.scene.as_deref().map(Scene::load).transpose()?;
+        if let Some(ObjectPlace::At(at)) = self.object_at {
+            scene.get_or_insert_with(Scene::default).objects.push(self.object.desc("object", at));
+        }
+        Ok(scene)
+    }
+
+    /// The object to put at every closing of a hand (`--object-at grasp`).
+    pub fn grasp_object(&self) -> Option<GraspObject> {
+        match self.object_at {
+            Some(ObjectPlace::Grasp) => Some(self.object),
+            _ => self.object_at_grasp,
+        }
     }
 
     /// A world for `config` with `scene` in it, recording its session if

@@ -3,7 +3,7 @@
 use super::options::{JsonOutput, MethodChoice, SessionArgs, TraceOutput};
 use super::{Outcome, print_objects, progress_bar};
 use coulomb_hands::input::recording::Format;
-use coulomb_hands::run::replay::{GraspObject, ReplayOptions, ReplaySummary};
+use coulomb_hands::run::replay::{ReplayOptions, ReplaySummary};
 use coulomb_hands::{GammaMode, RunError};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -19,9 +19,6 @@ pub struct ReplayArgs {
     output: JsonOutput,
     #[command(flatten)]
     session: SessionArgs,
-    /// Put an object where the hand grasps: SHAPE:SIZE_M:MASS_KG, SHAPE box or sphere.
-    #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
-    object_at_grasp: Option<GraspObject>,
     /// Contact stiffness: "auto" (Eq. 3.11, per object) or a fixed γ in N/m.
     #[arg(long, default_value_t = GammaMode::default(),
           value_parser = clap::value_parser!(GammaMode))]
@@ -46,7 +43,7 @@ impl ReplayArgs {
             scene: self.session.load_scene()?,
             gamma: self.gamma,
             method: self.method.method,
-            object_at_grasp: self.object_at_grasp,
+            object_at_grasp: self.session.grasp_object(),
             record: self.session.record.is_some(),
         };
         if is_session_file(&self.file) {
@@ -65,7 +62,7 @@ impl ReplayArgs {
             // A soak puts its objects back before each loop, so they must
             // exist from the start: one object, at the first closing.
             let mut fixtures = Vec::new();
-            if let Some(object) = self.object_at_grasp {
+            if let Some(object) = options.object_at_grasp {
                 fixtures.push(place_at_grasp(&mut world, &playback, object, 0)?.0);
             }
             let source = &recording.source_name;
@@ -86,7 +83,7 @@ impl ReplayArgs {
             w.finish()?;
         }
         self.session.save(&mut world)?;
-        let closings = self.object_at_grasp.is_some();
+        let closings = options.object_at_grasp.is_some();
         let format = &recording.format;
         self.output.print(&summary, |s| print_summary(s, format, closings))?;
         Ok(())

@@ -122,6 +122,7 @@ impl Session {
                 Call::PlaceObject(o, position, rotation) => {
                     world.place_object(ObjectId(*o), *position, *rotation).map_err(fail)?
                 }
+                Call::RemoveObject(o) => world.remove_object(ObjectId(*o)).map_err(fail)?,
                 Call::Step => {
                     world.step();
                     each(&world);

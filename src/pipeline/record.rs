@@ -28,6 +28,8 @@ pub enum Call {
     ReseatContacts(u32),
     /// [`crate::InteractionWorld::place_object`].
     PlaceObject(u32, Vec3, Quat),
+    /// [`crate::InteractionWorld::remove_object`].
+    RemoveObject(u32),
     /// [`crate::InteractionWorld::step_physics`], which ends every step.
     Step,
 }

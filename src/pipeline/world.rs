@@ -78,6 +78,9 @@ pub(super) struct ObjectSlot {
     pub raised: Option<super::step::Raised>,
     /// Its grab, for the grab baselines.
     pub grab: super::step::GrabSlot,
+    /// Set by [`InteractionWorld::remove_object`]: its body and collider
+    /// are gone from rapier, and its id names nothing.
+    pub removed: bool,
 }
 
 /// What the world keeps per hand.
@@ -257,9 +260,34 @@ impl InteractionWorld {
             forced: false,
             raised: None,
             grab: Default::default(),
+            removed: false,
         });
         self.record(|| Call::AddObject(desc.clone()));
         Ok(id)
+    }
+
+    /// Removes an object: its body and collider leave rapier, waking what
+    /// rested on it; its contacts end at the next step (an `Ended` event
+    /// each, as for a hand that lost tracking); a grab baseline lets go of
+    /// it. Its id is not given again: the other objects keep theirs, and
+    /// calls that name it fail with [`WorldError::NoSuchObject`].
+    pub fn remove_object(&mut self, id: ObjectId) -> Result<(), WorldError> {
+        self.slot(id)?;
+        let o = id.0 as usize;
+        self.end_grab(o);
+        self.grabbed.retain(|&g| g != id.0);
+        self.forced.retain(|&f| f != id.0);
+        self.unindexed.retain(|&u| u != id.0);
+        let slot = &mut self.objects[o];
+        (slot.removed, slot.forced, slot.raised) = (true, false, None);
+        slot.hand_force = Vec3::ZERO;
+        slot.reseat = true;
+        self.reseating.push(id.0);
+        self.physics.remove_body_with_colliders(slot.body, true);
+        // The kept broad-phase answers may name it.
+        self.scratch.near.forget();
+        self.record(|| Call::RemoveObject(id.0));
+        Ok(())
     }
 
     /// Adds a whole scene: its ground, statics, objects and towers, in that
@@ -356,39 +384,47 @@ impl InteractionWorld {
         self.hands.len()
     }
 
-    /// Objects added so far; their ids are `0..object_count()`.
+    /// Objects added so far, removed ones included: their ids are
+    /// `0..object_count()`, and the next object added gets the id
+    /// `object_count()`.
     pub fn object_count(&self) -> usize {
         self.objects.len()
     }
 
-    /// The ids of all objects, in order.
-    pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + use<> {
-        (0..self.objects.len() as u32).map(ObjectId)
+    /// The ids of the objects in the world (not removed), in order.
+    pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + '_ {
+        self.objects.iter().enumerate().filter(|(_, o)| !o.removed).map(|(i, _)| ObjectId(i as u32))
+    }
+
+    /// The object's slot, unless it was never added or was removed.
+    fn slot(&self, id: ObjectId) -> Result<&ObjectSlot, WorldError> {
+        let slot = self.objects.get(id.0 as usize).filter(|o| !o.removed);
+        slot.ok_or(WorldError::NoSuchObject(id))
     }
 
     /// The object's name, as given in its description.
     pub fn object_name(&self, id: ObjectId) -> Option<&str> {
-        self.objects.get(id.0 as usize).map(|o| o.name.as_str())
+        self.slot(id).ok().map(|o| o.name.as_str())
     }
 
     /// The contact stiffness γ in use for an object (N/m).
     pub fn object_gamma(&self, id: ObjectId) -> Option<f32> {
-        self.objects.get(id.0 as usize).map(|o| o.gamma)
+        self.slot(id).ok().map(|o| o.gamma)
     }
 
     /// The object's mass (kg).
     pub fn object_mass(&self, id: ObjectId) -> Option<f32> {
-        self.objects.get(id.0 as usize).map(|o| o.mass)
+        self.slot(id).ok().map(|o| o.mass)
     }
 
     /// The object's material.
     pub fn object_material(&self, id: ObjectId) -> Option<&Material> {
-        self.objects.get(id.0 as usize).map(|o| &o.material)
+        self.slot(id).ok().map(|o| &o.material)
     }
 
     /// The object's rapier body, for reading or scripted set-up.
     pub fn object_body(&self, id: ObjectId) -> Option<RigidBodyHandle> {
-        self.objects.get(id.0 as usize).map(|o| o.body)
+        self.slot(id).ok().map(|o| o.body)
     }
 
     /// Holds an object fixed in place (`true`) or lets it move again: a
@@ -396,7 +432,7 @@ impl InteractionWorld {
     /// it. A locked object still has contacts and their forces computed;
     /// they just do not move it.
     pub fn set_object_locked(&mut self, id: ObjectId, locked: bool) -> Result<(), WorldError> {
-        let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        let slot = self.slot(id)?;
         let kind = if locked { RigidBodyType::Fixed } else { RigidBodyType::Dynamic };
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
             body.set_body_type(kind, true);
@@ -413,8 +449,8 @@ impl InteractionWorld {
     /// whole sweep in their friction springs and contact points; once the
     /// object is free, only where the hand is now should push it.
     pub fn reseat_contacts(&mut self, id: ObjectId) -> Result<(), WorldError> {
-        let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
-        slot.reseat = true;
+        self.slot(id)?;
+        self.objects[id.0 as usize].reseat = true;
         self.reseating.push(id.0);
         self.record(|| Call::ReseatContacts(id.0));
         Ok(())
@@ -432,8 +468,8 @@ impl InteractionWorld {
         position: Vec3,
         rotation: Quat,
     ) -> Result<(), WorldError> {
-        let slot = self.objects.get_mut(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
-        let rotation = firewall::placement(&slot.name, position, rotation)?;
+        let rotation = firewall::placement(&self.slot(id)?.name, position, rotation)?;
+        let slot = &mut self.objects[id.0 as usize];
         slot.reseat = true;
         self.reseating.push(id.0);
         self.end_grab(id.0 as usize);
@@ -454,7 +490,7 @@ impl InteractionWorld {
 
     /// The current state of an object.
     pub fn object_state(&self, id: ObjectId) -> Result<ObjectState, WorldError> {
-        let slot = self.objects.get(id.0 as usize).ok_or(WorldError::NoSuchObject(id))?;
+        let slot = self.slot(id)?;
         let body = &self.physics.bodies[slot.body];
         Ok(ObjectState {
             position: body.translation(),

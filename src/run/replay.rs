@@ -6,6 +6,7 @@ use super::closing::{self, ClosingVerdict, Closings};
 use super::drive::{self, Driver, Observer, RecordedHand};
 use super::grasp::{GraspSite, SAMPLE_STEP, find_grasps};
 use super::observe::{ObjectSummary, Summary};
+use crate::hand::MAX_COORDINATE;
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::input::recording::Recording;
 use crate::output::Session;
@@ -301,6 +302,41 @@ impl std::str::FromStr for GraspObject {
                 .ok_or_else(|| GraspObjectError::Number { part, text: v.to_string() })
         };
         Ok(GraspObject { sphere, size: number("SIZE_M", size)?, mass: number("MASS_KG", mass)? })
+    }
+}
+
+/// Where a run puts its [`GraspObject`]: `grasp`, at every closing of a
+/// hand (held until the hand grips it, [`replay_closings`]), or `x,y,z`, once
+/// with its centre there (m). The CLI's `--object-at`, for `replay`, `live`
+/// and the viewer alike.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ObjectPlace {
+    /// At every closing of a hand.
+    Grasp,
+    /// Once, centred here (world, m).
+    At(Vec3),
+}
+
+/// Why a text is not an [`ObjectPlace`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("expected \"grasp\" or x,y,z in metres, e.g. 0,0.02,0.1, got \"{0}\"")]
+pub struct ObjectPlaceError(pub String);
+
+impl std::str::FromStr for ObjectPlace {
+    type Err = ObjectPlaceError;
+    fn from_str(s: &str) -> Result<Self, ObjectPlaceError> {
+        if s == "grasp" {
+            return Ok(ObjectPlace::Grasp);
+        }
+        let numbers: Vec<f32> = (s.split(',').map(|v| v.trim().parse::<f32>()))
+            .collect::<Result<_, _>>()
+            .map_err(|_| ObjectPlaceError(s.to_string()))?;
+        match numbers.as_slice() {
+            [x, y, z] if numbers.iter().all(|v| v.is_finite() && v.abs() <= MAX_COORDINATE) => {
+                Ok(ObjectPlace::At(Vec3::new(*x, *y, *z)))
+            }
+            _ => Err(ObjectPlaceError(s.to_string())),
+        }
     }
 }
 

@@ -87,8 +87,9 @@ pub(crate) struct SceneEntry {
     towers: Vec<Tower>,
 }
 
-/// A loaded scene.
-#[derive(Debug, Clone, PartialEq)]
+/// A loaded scene; the default is an empty one (no ground, the world's
+/// gravity).
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Scene {
     /// A flat ground, if any.
     pub ground: Option<Ground>,

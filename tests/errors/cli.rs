@@ -19,8 +19,11 @@ fn grasp_objects_name_the_part_that_is_wrong() {
     names(parse("box:-0.04:0.05"), &["SIZE_M must be a positive number, got \"-0.04\""]);
     names(parse("sphere:0.04:heavy"), &["MASS_KG must be a positive number, got \"heavy\""]);
     names(parse("sphere:0.04:inf"), &["MASS_KG must be a positive number, got \"inf\""]);
-    let e = usage_error(&["replay", "--object-at-grasp", "ball:0.04:0.05", &pinch()]);
-    names(e, &["'ball:0.04:0.05'", "--object-at-grasp", "unknown shape \"ball\""]);
+    let e =
+        usage_error(&["replay", "--object-at", "grasp", "--object", "ball:0.04:0.05", &pinch()]);
+    names(e, &["'ball:0.04:0.05'", "--object", "unknown shape \"ball\""]);
+    let e = usage_error(&["replay", "--object-at", "grip", &pinch()]);
+    names(e, &["'grip'", "--object-at", "expected \"grasp\" or x,y,z in metres"]);
 }
 
 #[test]
@@ -71,17 +74,17 @@ fn objects_at_closings_the_recording_lacks_or_that_cannot_exist() {
     let empty = dir.file("empty.json", recording(&[frame(0, &[]), frame(1000, &[])]));
     let empty = empty.display().to_string();
     // No hand closes: the replay runs and says so.
-    let (code, stdout, stderr) = run(&["replay", "--object-at-grasp", "box:0.04:0.05", &empty]);
+    let (code, stdout, stderr) = run(&["replay", "--object-at", "grasp", &empty]);
     assert_eq!(code, Some(0), "{stderr}");
     names(&stdout, &["closings: 0 (no hand closes"]);
     // An object that cannot exist is refused before the replay, closings or not.
     let one = dir.file("one.json", recording(&[frame(0, &[leap_hand(7)])]));
-    let e =
-        cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &one.display().to_string()]);
+    let huge = ["replay", "--object-at", "grasp", "--object", "box:1e30:0.05"];
+    let e = cli_error(&[&huge[..], &[&one.display().to_string()]].concat());
     names(e, &["object 'closing-1': shape.half_extents: must be finite and within ±10000 m"]);
-    let e = cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", &empty]);
+    let e = cli_error(&[&huge[..], &[&empty]].concat());
     names(e, &["object 'closing-1': shape.half_extents"]);
-    let e = cli_error(&["replay", "--object-at-grasp", "box:0.04:0.05", "--loop", "1s", &empty]);
+    let e = cli_error(&["replay", "--object-at", "grasp", "--loop", "1s", &empty]);
     assert_eq!(e, "the recording has 0 grasps held long enough to judge, so there is no grasp 1");
 }
 
@@ -121,8 +124,16 @@ fn a_run_that_fails_before_its_first_step_leaves_its_trace_path_as_it_was() {
     for trace in [&kept, &unborn] {
         // The object cannot exist, so the replay fails before its first step.
         let trace = trace.display().to_string();
-        let e =
-            cli_error(&["replay", "--object-at-grasp", "box:1e30:0.05", "--trace", &trace, &one]);
+        let e = cli_error(&[
+            "replay",
+            "--object-at",
+            "grasp",
+            "--object",
+            "box:1e30:0.05",
+            "--trace",
+            &trace,
+            &one,
+        ]);
         names(e, &["object 'closing-1': shape.half_extents"]);
     }
     assert_eq!(std::fs::read_to_string(&kept).unwrap(), earlier);
@@ -159,7 +170,9 @@ fn live_objects_and_scenes_are_checked_before_connecting() {
     let e = usage_error(&["live", "--object", "sphere:0.03:0.02"]);
     names(e, &["required arguments were not provided", "--object-at"]);
     let e = usage_error(&["live", "--object-at", "0,0.1"]);
-    names(e, &["'0,0.1'", "--object-at", "three finite numbers"]);
+    names(e, &["'0,0.1'", "--object-at", "expected \"grasp\" or x,y,z in metres"]);
+    let e = cli_error(&["live", "--object-at", "grasp"]);
+    names(e, &["--object-at grasp needs a hand's closings", "put the object at x,y,z"]);
     let e = usage_error(&["live", "--object-at", "0,0.1,0", "--object", "cube:0.04:0.05"]);
     names(e, &["--object", "unknown shape \"cube\""]);
     let dir = Scratch::new("cli-live");
@@ -241,6 +254,7 @@ fn an_unknown_method_is_a_usage_error_listing_the_valid_ones() {
 
 #[test]
 fn replay_json_carries_a_verdict_per_closing_and_the_text_a_line_each() {
+    // In the old spelling, `--object-at-grasp`, which is still read.
     let args = ["replay", "data/leap/grab.json.lz", "--object-at-grasp", "box:0.045:0.05"];
     let (code, json, stderr) = run(&[&args[..], &["--json"]].concat());
     assert_eq!(code, Some(0), "{stderr}");
@@ -264,6 +278,23 @@ fn replay_json_carries_a_verdict_per_closing_and_the_text_a_line_each() {
     let (_, text, _) = run(&args);
     let lines: Vec<&str> = text.lines().filter(|l| l.starts_with("  closing-")).collect();
     assert_eq!(lines.len(), 2, "{text}");
+}
+
+#[test]
+fn replay_puts_an_object_at_a_fixed_place_once_with_the_same_option() {
+    // A 3 cm sphere of 20 g, 40 cm beside where the hand works: it rests.
+    let args = ["replay", "data/leap/grab.json.lz", "--object-at", "0.4,0.015,0"];
+    let (code, json, stderr) =
+        run(&[&args[..], &["--object", "sphere:0.03:0.02", "--json"]].concat());
+    assert_eq!(code, Some(0), "{stderr}");
+    let summary: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let objects = summary["objects"].as_array().unwrap();
+    assert_eq!(objects.len(), 1, "{json}");
+    assert_eq!(objects[0]["name"], "object");
+    let start = objects[0]["start"].as_array().unwrap();
+    assert!((start[0].as_f64().unwrap() - 0.4).abs() < 1e-3, "{json}");
+    assert!(objects[0]["displacement"].as_f64().unwrap() < 0.005, "at rest: {json}");
+    assert!(summary["closings"].as_array().is_none_or(|c| c.is_empty()), "no closings: {json}");
 }
 
 #[cfg(unix)]

@@ -25,6 +25,7 @@ mod pinch;
 mod push;
 mod recordings;
 mod release;
+mod removal;
 mod rolling;
 mod safety;
 mod scenarios;

@@ -17,7 +17,7 @@ const TICKS: u32 = 16;
 fn app() -> App {
     let scenario = Scenario::find("grasp-lift").expect("shipped");
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, CoulombHandsPlugin))
+    app.add_plugins((MinimalPlugins, CoulombHandsPlugin::default()))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(TICKS.into())))
         .insert_resource(HandPhysics::of_scenario(&scenario).expect("a world"));
     // Into the hold: the hand grips the lifted cube from about 1.6 s on.

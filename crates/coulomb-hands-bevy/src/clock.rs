@@ -1,8 +1,10 @@
-//! The physics' own schedule and clock. Each frame, the app's virtual time
-//! is added to [`Time<HandClock>`], and [`HandPhysicsStep`] runs once per
-//! whole world `dt` of it, so the physics rate is the world's whatever the
-//! frame rate (as Bevy's fixed loop does, but on a clock of its own: the
-//! app's `Time<Fixed>` and its fixed schedules are left as they are).
+//! The physics' own schedule and clock. Each run of the plugin's schedule,
+//! the time it runs on (the app's virtual time, or a fixed schedule's
+//! timestep) is added to [`Time<HandClock>`], and [`HandPhysicsStep`] runs
+//! once per whole world `dt` of it, so the physics rate is the world's
+//! whatever the frame rate (as Bevy's fixed loop does, but on a clock of
+//! its own: the app's `Time<Fixed>` and its fixed schedules are left as
+//! they are).
 
 use crate::physics::HandPhysics;
 use bevy::ecs::schedule::ScheduleLabel;
@@ -10,9 +12,8 @@ use bevy::prelude::*;
 use std::time::Duration;
 
 /// The schedule of one physics step. The plugin's step runs in it, in
-/// [`crate::HandPhysicsSystems::Step`]; an app's system that must see
-/// every step (not every frame) goes here too. While it runs, `Time` is
-/// the physics clock.
+/// [`crate::WorldStep`]; an app's system that must see every step (not
+/// every frame) goes here too. While it runs, `Time` is the physics clock.
 #[derive(ScheduleLabel, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct HandPhysicsStep;
 
@@ -32,8 +33,9 @@ impl HandClock {
     }
 }
 
-/// Runs [`HandPhysicsStep`] once for each whole world `dt` of virtual time
-/// received, with `Time` set to the physics clock meanwhile.
+/// Runs [`HandPhysicsStep`] once for each whole world `dt` of time
+/// received (`Time`'s delta in the schedule the plugin runs in), with
+/// `Time` set to the physics clock meanwhile and put back after.
 pub(crate) fn run_steps(world: &mut World) {
     let Some(dt) = world.get_resource::<HandPhysics>().map(HandPhysics::timestep) else {
         return;
@@ -41,8 +43,8 @@ pub(crate) fn run_steps(world: &mut World) {
     if dt.is_zero() {
         return;
     }
-    let delta = world.resource::<Time<Virtual>>().delta();
-    world.resource_mut::<Time<HandClock>>().context_mut().overstep += delta;
+    let outer = *world.resource::<Time>();
+    world.resource_mut::<Time<HandClock>>().context_mut().overstep += outer.delta();
     let _ = world.try_schedule_scope(HandPhysicsStep, |world, schedule| {
         loop {
             let mut clock = world.resource_mut::<Time<HandClock>>();
@@ -54,5 +56,5 @@ pub(crate) fn run_steps(world: &mut World) {
             schedule.run(world);
         }
     });
-    *world.resource_mut::<Time>() = world.resource::<Time<Virtual>>().as_generic();
+    *world.resource_mut::<Time>() = outer;
 }

@@ -4,7 +4,7 @@
 //! contacts as a resource.
 
 use crate::convert::to_bevy_vec3;
-use crate::entities::InteractionEntities;
+use crate::entities::{InteractionEntities, spawn_new};
 use crate::physics::HandPhysics;
 use crate::reflect::{BoneReflect, FrictionStateReflect};
 use bevy::math::Vec3;
@@ -126,54 +126,82 @@ fn view(entities: &InteractionEntities, c: &Contact) -> Option<ContactView> {
     })
 }
 
-/// The objects a hand touched after the last step, by [`ObjectId`] index.
+/// The objects a hand touched after the last step, by [`ObjectId`] index,
+/// and the step's scratch, kept so that a step allocates nothing.
 #[derive(Resource, Debug, Default)]
 pub(crate) struct Touched {
     serial: Option<u64>,
     objects: Vec<bool>,
+    /// This step's `objects`.
+    now: Vec<bool>,
+    /// Each object's first contact that began this step, and last that
+    /// ended.
+    first: Vec<Option<ContactChange>>,
+    last: Vec<Option<ContactChange>>,
+}
+
+impl Touched {
+    /// Empties the step's scratch for `objects` objects, and notes which
+    /// the world's contacts touch now.
+    fn start(&mut self, objects: usize, contacts: &[Contact]) {
+        for list in [&mut self.now, &mut self.objects] {
+            list.resize(objects, false);
+        }
+        self.now.fill(false);
+        for c in contacts {
+            self.now[c.object.0 as usize] = true;
+        }
+        for list in [&mut self.first, &mut self.last] {
+            list.clear();
+            list.resize(objects, None);
+        }
+    }
 }
 
 /// Runs one physics step, writes its contact events as messages, and
-/// triggers the objects' touches and releases.
+/// triggers the objects' touches and releases. Objects and hands added to
+/// the world since the frame began (by an app's system in this schedule)
+/// get their entities first.
 pub(crate) fn step_physics(
     physics: Option<ResMut<HandPhysics>>,
-    entities: Res<InteractionEntities>,
+    mut entities: ResMut<InteractionEntities>,
     mut touched: ResMut<Touched>,
     mut began: MessageWriter<ContactBegan>,
     mut ended: MessageWriter<ContactEnded>,
     mut commands: Commands,
 ) {
     let Some(mut physics) = physics else { return };
+    if !entities.is_for(&physics) {
+        // A world inserted since the frame began: `link_entities` starts
+        // it, in the next frame.
+        return;
+    }
+    spawn_new(&physics, &mut entities, &mut commands);
     if touched.serial != Some(physics.serial()) {
-        *touched = Touched { serial: Some(physics.serial()), objects: Vec::new() };
+        touched.serial = Some(physics.serial());
+        touched.objects.clear();
     }
     if !physics.step() {
         return;
     }
     let world = physics.world();
-    let mut now = vec![false; world.object_count()];
-    for c in world.contacts() {
-        now[c.object.0 as usize] = true;
-    }
-    let before = |id: ObjectId| touched.objects.get(id.0 as usize).copied().unwrap_or(false);
-    let mut first = vec![None; now.len()];
-    let mut last = vec![None; now.len()];
+    let touched = &mut *touched;
+    touched.start(world.object_count(), world.contacts());
     for e in world.events() {
         let Some(change) = change(&entities, e) else { continue };
         match e.kind {
             ContactEventKind::Began => {
                 began.write(ContactBegan(change));
-                first[e.object.0 as usize].get_or_insert(change);
+                touched.first[e.object.0 as usize].get_or_insert(change);
             }
             ContactEventKind::Ended => {
                 ended.write(ContactEnded(change));
-                last[e.object.0 as usize] = Some(change);
+                touched.last[e.object.0 as usize] = Some(change);
             }
         }
     }
-    for (i, &touching) in now.iter().enumerate() {
-        let was = before(ObjectId(i as u32));
-        match (was, touching, first[i], last[i]) {
+    for (i, (&was, &touching)) in touched.objects.iter().zip(&touched.now).enumerate() {
+        match (was, touching, touched.first[i], touched.last[i]) {
             (false, true, Some(contact), _) => {
                 commands.trigger(ObjectTouched { entity: contact.object, contact });
             }
@@ -183,7 +211,7 @@ pub(crate) fn step_physics(
             _ => {}
         }
     }
-    touched.objects = now;
+    std::mem::swap(&mut touched.objects, &mut touched.now);
 }
 
 /// Copies the active contacts into [`Contacts`].

@@ -4,19 +4,24 @@
 //! An object is one entity. A hand is an entity with its 16 bones as
 //! children; the hand stays at the origin, so a bone's transform is its
 //! pose in the world (m, y up). The plugin spawns the entities of the
-//! world's objects and hands; an app's own hand entity ([`AppHand`]) is
-//! given its bones.
+//! world's objects and hands; an app's own object entities
+//! ([`crate::objects::ObjectDescription`]) are added to the world, and its
+//! own hand entities ([`crate::input::AppHand`]) are given their bones.
 
 use crate::convert;
-use crate::input::{self, AppHand, AppHandLink};
+use crate::input::AppHandLink;
 use crate::physics::HandPhysics;
-use crate::physics::HandPhysicsReplaced;
 use crate::reflect::{BoneReflect, HandIdReflect, ObjectIdReflect, SideReflect};
 use bevy::math::{Quat, Vec3};
 use bevy::prelude::*;
 use coulomb_hands::hand::{BONES_PER_HAND, Bone, BoneShape, HandId, HandPose, Side};
 use coulomb_hands::scene::ObjectId;
-/// An object of the interaction world. Its `Transform` follows the world.
+
+/// An object of the interaction world: the plugin gives it to the entities
+/// of the world's objects, and to an app's entity once its
+/// [`crate::objects::ObjectDescription`] is added to the world. Its `Transform` follows
+/// the world. Despawning the entity, or removing this component, removes
+/// the object from the world.
 #[derive(Component, Reflect, Debug, Clone, Copy, PartialEq, Eq)]
 #[reflect(Component, Debug, PartialEq)]
 #[require(Transform)]
@@ -76,7 +81,9 @@ pub enum BoneSize {
 pub struct InteractionEntities {
     /// The [`HandPhysics::serial`] they are for.
     serial: Option<u64>,
-    objects: Vec<Entity>,
+    /// By object id; `None` for an object the world added and removed
+    /// before it had an entity.
+    objects: Vec<Option<Entity>>,
     hands: Vec<HandEntities>,
 }
 
@@ -85,14 +92,29 @@ pub struct InteractionEntities {
 struct HandEntities {
     hand: Entity,
     bones: [Entity; BONES_PER_HAND],
-    /// An [`AppHand`]: the app's entity, which outlives the world.
+    /// An [`crate::input::AppHand`]: the app's entity, which outlives the world.
     app: bool,
 }
 
 impl InteractionEntities {
-    /// The entity of an object.
+    /// The entity of an object: also of one removed from the world since,
+    /// so that its last contacts' ends name it.
     pub fn object(&self, id: ObjectId) -> Option<Entity> {
-        self.objects.get(id.0 as usize).copied()
+        self.objects.get(id.0 as usize).copied().flatten()
+    }
+
+    /// Whether they are `physics`' entities.
+    pub(crate) fn is_for(&self, physics: &HandPhysics) -> bool {
+        self.serial == Some(physics.serial())
+    }
+
+    /// Makes `entity` object `id`'s, the world having just added it.
+    pub(crate) fn link_object(&mut self, id: ObjectId, entity: Entity) {
+        let i = id.0 as usize;
+        if self.objects.len() <= i {
+            self.objects.resize(i + 1, None);
+        }
+        self.objects[i] = Some(entity);
     }
 
     /// The entity of a hand.
@@ -105,12 +127,43 @@ impl InteractionEntities {
         self.hands.get(id.0 as usize).map(|h| h.bones[bone.index()])
     }
 
-    /// Forgets the entities of a replaced world: despawns the objects and
-    /// the plugin's hands, and unlinks the app's hands (their bones go).
-    fn clear(&mut self, commands: &mut Commands) {
+    /// Makes them `physics`' if they are another world's, and says whether
+    /// they were: the other world's are forgotten ([`Self::clear`]).
+    pub(crate) fn start(
+        &mut self,
+        physics: &HandPhysics,
+        commands: &mut Commands,
+        described: impl Fn(Entity) -> bool,
+    ) -> bool {
+        if self.is_for(physics) {
+            return false;
+        }
+        self.clear(commands, described);
+        self.serial = Some(physics.serial());
+        true
+    }
+
+    /// Makes the app's entity `hand` the world's `side` hand `id`, giving
+    /// it bones.
+    pub(crate) fn push_app_hand(
+        &mut self,
+        commands: &mut Commands,
+        hand: Entity,
+        id: HandId,
+        side: Side,
+    ) {
+        self.hands.push(give_bones(commands, hand, id, side, true));
+    }
+
+    /// Forgets the entities of a replaced world: despawns the plugin's
+    /// objects and hands, and unlinks the app's hands (their bones go).
+    /// The app's objects stay, for the new world to add.
+    fn clear(&mut self, commands: &mut Commands, described: impl Fn(Entity) -> bool) {
         // `try_`: the app may have despawned any of them already.
-        for object in self.objects.drain(..) {
-            commands.entity(object).try_despawn();
+        for object in self.objects.drain(..).flatten() {
+            if !described(object) {
+                commands.entity(object).try_despawn();
+            }
         }
         for hand in self.hands.drain(..) {
             if hand.app {
@@ -142,51 +195,31 @@ pub fn bone_transform(pose: &HandPose, bone: Bone) -> (Transform, BoneSize) {
     }
 }
 
-/// Spawns entities for the objects and hands of the world that have none
-/// yet, and adds the app's unlinked [`AppHand`]s to the world. A newly
-/// inserted [`HandPhysics`] first clears those of the one it replaced
-/// (told apart by [`HandPhysics::serial`]: inserting over a resource does
-/// not mark it added), and says so.
-pub(crate) fn spawn_entities(
-    physics: Option<ResMut<HandPhysics>>,
-    mut entities: ResMut<InteractionEntities>,
-    app_hands: Query<(Entity, &AppHand, Option<&AppHandLink>)>,
-    mut replaced: MessageWriter<HandPhysicsReplaced>,
-    mut commands: Commands,
+/// Spawns entities for the objects and hands added to the world since
+/// the last call (through [`HandPhysics::world_mut`] or
+/// [`HandPhysics::add_hand`]): a comparison of counts when there are none,
+/// so each physics step can afford it.
+pub(crate) fn spawn_new(
+    physics: &HandPhysics,
+    entities: &mut InteractionEntities,
+    commands: &mut Commands,
 ) {
-    let Some(mut physics) = physics else { return };
-    let entities = &mut *entities;
-    if entities.serial != Some(physics.serial()) {
-        entities.clear(&mut commands);
-        entities.serial = Some(physics.serial());
-        replaced.write(HandPhysicsReplaced { serial: physics.serial() });
-    }
     let world = physics.world();
-    for id in world.object_ids().skip(entities.objects.len()) {
-        let state = world.object_state(id).ok();
-        let transform =
-            state.map_or(Transform::IDENTITY, |s| convert::transform(s.position, s.rotation));
-        let name = Name::new(world.object_name(id).unwrap_or("").to_string());
-        entities.objects.push(commands.spawn((InteractionObject(id), name, transform)).id());
+    for i in entities.objects.len()..world.object_count() {
+        let id = ObjectId(i as u32);
+        // An object added and removed before it had an entity gets none.
+        let entity = world.object_state(id).ok().map(|s| {
+            let transform = convert::transform(s.position, s.rotation);
+            let name = Name::new(world.object_name(id).unwrap_or("").to_string());
+            commands.spawn((InteractionObject(id), name, transform)).id()
+        });
+        entities.objects.push(entity);
     }
     for i in entities.hands.len()..world.hand_count() {
         let id = HandId(i as u32);
         let side = world.hand_side(id).unwrap_or(Side::Right);
         let hand = commands.spawn(Name::new(format!("{side:?} hand"))).id();
-        entities.hands.push(give_bones(&mut commands, hand, id, side, false));
-    }
-    // Left hands first, then by entity, so a world's hand ids do not depend
-    // on the query's order.
-    let serial = physics.serial();
-    let mut unlinked: Vec<(Entity, AppHand)> = (app_hands.iter())
-        .filter(|(_, _, link)| link.is_none_or(|l| l.serial != serial))
-        .map(|(entity, hand, _)| (entity, *hand))
-        .collect();
-    unlinked.sort_by_key(|(entity, hand)| (hand.side == Side::Right, *entity));
-    for (entity, app_hand) in unlinked {
-        let (id, link) = input::attach(&mut physics, app_hand);
-        commands.entity(entity).insert(link);
-        entities.hands.push(give_bones(&mut commands, entity, id, app_hand.side, true));
+        entities.hands.push(give_bones(commands, hand, id, side, false));
     }
 }
 

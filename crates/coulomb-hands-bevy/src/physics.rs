@@ -1,13 +1,13 @@
 //! [`HandPhysics`]: the app's interaction world and the core's driver that
 //! poses its hands and steps it, one step per tick of the plugin's clock.
 
+use bevy::platform::cell::SyncCell;
 use coulomb_hands::hand::HandId;
 use coulomb_hands::pipeline::{InteractionWorld, WorldError};
 use coulomb_hands::run::RunError;
-use coulomb_hands::run::drive::{Driver, HandFrame, HandSource, Observer};
+use coulomb_hands::run::drive::{Driver, HandFrame, HandSource, Observer, StepView};
 use coulomb_hands::run::scenario::Scenario;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Mutex, PoisonError};
 use std::time::Duration;
 
 /// The next [`HandPhysics`]'s serial number.
@@ -48,10 +48,10 @@ pub struct HandPhysicsReplaced {
 pub struct HandPhysics {
     #[reflect(ignore)]
     driver: Driver<'static, InteractionWorld>,
-    /// Behind locks that are never taken, as the driver's sources are:
-    /// observers need only be `Send`.
+    /// In a `SyncCell`, reached only through `&mut self`: observers need
+    /// only be `Send`.
     #[reflect(ignore)]
-    observers: Vec<Mutex<Box<dyn Observer + Send>>>,
+    observers: SyncCell<Observers>,
     #[reflect(ignore)]
     stopped: Option<Stopped>,
     /// Tells this world from one it replaced in an app.
@@ -62,7 +62,8 @@ impl HandPhysics {
     /// Drives `world`, with no hands yet.
     pub fn new(world: InteractionWorld) -> HandPhysics {
         let serial = SERIAL.fetch_add(1, Ordering::Relaxed);
-        HandPhysics { driver: Driver::new(world), observers: Vec::new(), stopped: None, serial }
+        let observers = SyncCell::new(Observers(Vec::new()));
+        HandPhysics { driver: Driver::new(world), observers, stopped: None, serial }
     }
 
     /// A scenario's world, scene and hands (scripted or recorded).
@@ -85,7 +86,7 @@ impl HandPhysics {
 
     /// Shows every step to `observer` (a trace writer, a session recorder).
     pub fn observe(&mut self, observer: impl Observer + Send + 'static) {
-        self.observers.push(Mutex::new(Box::new(observer)));
+        self.observers.get().0.push(Box::new(observer));
     }
 
     /// The world.
@@ -130,12 +131,8 @@ impl HandPhysics {
         if self.stopped.is_some() {
             return false;
         }
-        let mut observers: Vec<&mut dyn Observer> = (self.observers.iter_mut())
-            .map(|o| {
-                &mut **o.get_mut().unwrap_or_else(PoisonError::into_inner) as &mut dyn Observer
-            })
-            .collect();
-        match self.driver.step(&mut observers) {
+        let observers: &mut dyn Observer = self.observers.get();
+        match self.driver.step(&mut [observers]) {
             Ok(true) => true,
             Ok(false) => {
                 self.stopped = Some(Stopped::Finished);
@@ -146,5 +143,23 @@ impl HandPhysics {
                 false
             }
         }
+    }
+}
+
+/// The app's observers, shown each step in the order they were added: one
+/// observer for the driver, so a step needs no list of its own.
+struct Observers(Vec<Box<dyn Observer + Send>>);
+
+impl Observer for Observers {
+    fn before_step(&mut self, world: &mut InteractionWorld, t: f64) -> Result<(), RunError> {
+        self.0.iter_mut().try_for_each(|o| o.before_step(world, t))
+    }
+
+    fn after_hand_forces(&mut self, world: &mut InteractionWorld) -> Result<(), RunError> {
+        self.0.iter_mut().try_for_each(|o| o.after_hand_forces(world))
+    }
+
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        self.0.iter_mut().try_for_each(|o| o.after_step(step))
     }
 }

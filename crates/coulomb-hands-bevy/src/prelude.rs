@@ -8,5 +8,6 @@ pub use crate::entities::{
     BoneSize, HandBone, InteractionEntities, InteractionHand, InteractionObject,
 };
 pub use crate::input::{AppHand, HandInput, JointsError};
+pub use crate::objects::{ObjectDescription, ObjectRejected};
 pub use crate::physics::{HandPhysics, HandPhysicsReplaced, Stopped};
-pub use crate::{CoulombHandsPlugin, HandPhysicsSystems};
+pub use crate::{CoulombHandsPlugin, HandPhysicsSystems, WorldStep};

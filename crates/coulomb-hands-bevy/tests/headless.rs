@@ -37,7 +37,7 @@ fn record(
 /// A headless app around `physics`, whose every frame lasts `frame`.
 fn app(physics: HandPhysics, frame: Duration) -> App {
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, CoulombHandsPlugin))
+    app.add_plugins((MinimalPlugins, CoulombHandsPlugin::default()))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<Seen>()
         .add_systems(Update, record)

@@ -88,7 +88,7 @@ fn a_live_leap_hand_pushes_a_cube_and_the_app_never_waits_for_the_service() {
         let mut driven = HandPhysics::new(world);
         let hand = driven.add_hand(feed.hand(Side::Right));
         let mut app = App::new();
-        app.add_plugins((MinimalPlugins, CoulombHandsPlugin))
+        app.add_plugins((MinimalPlugins, CoulombHandsPlugin::default()))
             .init_resource::<Began>()
             .add_systems(Update, count)
             .insert_resource(driven);

@@ -270,7 +270,7 @@ impl Plugin for HandVisualPlugin {
         crate::sets::configure(app);
         app.init_resource::<Grips>()
             .init_resource::<DrawnHands>()
-            .add_systems(HandPhysicsStep, track_grips.after(HandPhysicsSystems::Step))
+            .add_systems(HandPhysicsStep, track_grips.after(WorldStep))
             .add_systems(Update, draw_hands.in_set(ViewerSystems::Draw));
     }
 }

@@ -101,7 +101,7 @@ impl Viewer {
             .set(render_plugin())
             .disable::<bevy::audio::AudioPlugin>();
         let mut app = App::new();
-        app.add_plugins((with_runtime(plugins, live_xr)?, CoulombHandsPlugin));
+        app.add_plugins((with_runtime(plugins, live_xr)?, CoulombHandsPlugin::default()));
         spawn_app_hands(&mut app, &self.source);
         app.add_plugins((ViewerPlugin { task: self.task.is_some() }, ready::RendererReadyPlugin))
             .insert_resource(physics)
@@ -146,7 +146,7 @@ impl Viewer {
 pub fn headless_app(source: Source, method: Method) -> Result<App, LoadError> {
     let physics = source.build(method)?;
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, bevy::input::InputPlugin, CoulombHandsPlugin))
+    app.add_plugins((MinimalPlugins, bevy::input::InputPlugin, CoulombHandsPlugin::default()))
         .add_plugins((transport::TransportPlugin, mouse_hand::MouseHandPlugin));
     spawn_app_hands(&mut app, &source);
     app.insert_resource(physics)

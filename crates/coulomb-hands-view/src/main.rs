@@ -5,7 +5,7 @@
 use clap::Parser;
 use coulomb_hands::input::convert::MountPreset;
 use coulomb_hands::pipeline::Method;
-use coulomb_hands::run::replay::GraspObject;
+use coulomb_hands::run::replay::{GraspObject, ObjectPlace};
 use coulomb_hands_bevy::convert::to_core_vec3;
 use coulomb_hands_view::ar::Background;
 use coulomb_hands_view::camera::{StartView, Stereo};
@@ -32,8 +32,21 @@ struct Args {
     /// With a recording: the scenery and objects of this scene file.
     #[arg(long)]
     scene: Option<std::path::PathBuf>,
-    /// With a recording: an object at each closing of a hand, SHAPE:SIZE_M:MASS_KG.
-    #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG")]
+    /// With a recording: an object (see --object) at each closing of a hand ("grasp"), or once
+    /// with its centre at "x,y,z" in metres.
+    #[arg(long, value_name = "grasp|X,Y,Z")]
+    object_at: Option<ObjectPlace>,
+    /// The --object-at object: SHAPE:SIZE_M:MASS_KG, SHAPE box (SIZE its side) or sphere (SIZE
+    /// its diameter), of wood.
+    #[arg(
+        long,
+        value_name = "SHAPE:SIZE_M:MASS_KG",
+        default_value = "box:0.04:0.05",
+        requires = "object_at"
+    )]
+    object: GraspObject,
+    /// The old spelling of `--object SHAPE:SIZE_M:MASS_KG --object-at grasp`, still read.
+    #[arg(long, value_name = "SHAPE:SIZE_M:MASS_KG", hide = true, conflicts_with = "object_at")]
     object_at_grasp: Option<GraspObject>,
     /// Save a PNG screenshot when the simulated time reaches T seconds (repeatable).
     #[arg(long, value_name = "T=PATH.png")]
@@ -119,7 +132,10 @@ fn main() -> ExitCode {
     let options = LoadOptions {
         method: args.method,
         scene: args.scene,
-        object_at_grasp: args.object_at_grasp,
+        object: match (args.object_at, args.object_at_grasp) {
+            (Some(at), _) => Some((args.object, at)),
+            (None, old) => old.map(|object| (object, ObjectPlace::Grasp)),
+        },
         head: args
             .head_mounted
             .map(|mount| HeadMount { mount, head: args.head.unwrap_or_default() }),

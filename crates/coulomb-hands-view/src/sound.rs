@@ -95,8 +95,7 @@ impl Plugin for SoundPlugin {
             let mut sources = app.world_mut().resource_mut::<Assets<AudioSource>>();
             sound.tap = Some(sources.add(AudioSource { bytes: bytes.into() }));
         }
-        app.insert_resource(sound)
-            .add_systems(HandPhysicsStep, listen.after(HandPhysicsSystems::Step));
+        app.insert_resource(sound).add_systems(HandPhysicsStep, listen.after(WorldStep));
     }
 }
 

@@ -14,7 +14,7 @@ use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld, Method};
 use coulomb_hands::run::closing::Closings;
 use coulomb_hands::run::live::LiveFeed;
-use coulomb_hands::run::replay::{GraspObject, replay_world};
+use coulomb_hands::run::replay::{GraspObject, ObjectPlace, replay_world};
 use coulomb_hands::run::scenario::{Scenario, ScenarioHand};
 use coulomb_hands::scene::Scene;
 use coulomb_hands_bevy::physics::HandPhysics;
@@ -34,7 +34,7 @@ pub enum Source {
     /// A scenario: its scene and scripted or recorded hands.
     Scenario(Box<Scenario>),
     /// A tracking recording, played in an optional scene, with an object
-    /// put at each closing of a hand when asked (as `replay --object-at-grasp`).
+    /// put at each closing of a hand when asked (as `replay --object-at grasp`).
     Recording {
         /// The file's name, for the HUD.
         name: String,
@@ -89,8 +89,9 @@ pub struct LoadOptions {
     pub method: Method,
     /// Scenery for a recording.
     pub scene: Option<std::path::PathBuf>,
-    /// An object at each closing of a recording.
-    pub object_at_grasp: Option<GraspObject>,
+    /// An object for a recording, and where: at each closing of a hand,
+    /// or once at a fixed place.
+    pub object: Option<(GraspObject, ObjectPlace)>,
     /// A recording's tracker was worn on this head (§3.8.1).
     pub head: Option<HeadMount>,
 }
@@ -98,7 +99,7 @@ pub struct LoadOptions {
 impl LoadOptions {
     /// The options that only a recording takes.
     pub fn for_recording(&self) -> bool {
-        self.scene.is_some() || self.object_at_grasp.is_some() || self.head.is_some()
+        self.scene.is_some() || self.object.is_some() || self.head.is_some()
     }
 }
 
@@ -113,7 +114,7 @@ pub enum HandDriver {
 }
 
 /// Why a recording's options were refused for another input.
-const RECORDING_ONLY: &str = "--scene, --object-at-grasp and --head-mounted go with a recording";
+const RECORDING_ONLY: &str = "--scene, --object-at and --head-mounted go with a recording";
 
 impl Source {
     /// Loads `input`: nothing (the desk scene), a shipped scenario's name,
@@ -143,10 +144,18 @@ impl Source {
                 }
                 None => recording.playback(glam::Vec3::ZERO, DEFAULT_GRACE),
             }?;
-            let scene = options.scene.as_deref().map(Scene::load).transpose()?;
+            let mut scene = options.scene.as_deref().map(Scene::load).transpose()?;
+            let object = match options.object {
+                Some((object, ObjectPlace::Grasp)) => Some(object),
+                Some((object, ObjectPlace::At(at))) => {
+                    let objects = &mut scene.get_or_insert_with(Scene::default).objects;
+                    objects.push(object.desc("object", at));
+                    None
+                }
+                None => None,
+            };
             let name = recording.source_name.clone();
-            let (object, head, playback) =
-                (options.object_at_grasp, options.head, Box::new(playback));
+            let (head, playback) = (options.head, Box::new(playback));
             return Ok(Source::Recording { name, playback, scene, object, head });
         }
         Ok(Source::Scene { name: input.to_string(), scene: Scene::load(Path::new(input))? })

@@ -79,10 +79,7 @@ impl Plugin for TimingPlugin {
         app.init_resource::<StepTimer>()
             .add_systems(
                 HandPhysicsStep,
-                (
-                    start_step.before(HandPhysicsSystems::Step),
-                    stop_step.after(HandPhysicsSystems::Step),
-                ),
+                (start_step.before(WorldStep), stop_step.after(WorldStep)),
             )
             .add_systems(
                 RunFixedMainLoop,

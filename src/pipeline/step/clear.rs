@@ -20,7 +20,7 @@ impl InteractionWorld {
     /// push this step.
     pub(super) fn clear_forces(&mut self) {
         if std::mem::take(&mut self.external) {
-            for slot in self.objects.iter_mut() {
+            for slot in self.objects.iter_mut().filter(|o| !o.removed) {
                 if let Some(raised) = slot.raised.take() {
                     raised.restore(&mut self.physics.bodies[slot.body]);
                 }

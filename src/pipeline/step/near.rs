@@ -180,14 +180,16 @@ impl InteractionWorld {
                 QueryFilter::default(),
             );
             let found = query.intersect_aabb_conservative(hand.loosened(SLACK + margin));
-            ids.extend(found.filter_map(|(_, collider)| tagged(collider.user_data, objects)));
+            let tagged = found.filter_map(|(_, collider)| tagged(collider.user_data, objects));
+            // rapier's tree keeps a removed collider's leaf until its step.
+            ids.extend(tagged.filter(|&o| !self.objects[o].removed));
             ids.extend(self.unindexed.iter().map(|&o| o as usize));
             ids.sort_unstable();
             ids.dedup();
             answer.drift = 0.0;
         } else {
             // A speed that bounds nothing: every object is a candidate.
-            ids.extend(0..objects);
+            ids.extend((0..objects).filter(|&o| !self.objects[o].removed));
             answer.drift = f32::INFINITY;
         }
         near.grown.clear();

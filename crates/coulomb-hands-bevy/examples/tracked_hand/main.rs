@@ -1,5 +1,6 @@
-//! README's "In a Bevy app": each frame an app system (`push_joints`) writes
-//! the joints of a tracked hand, and an observer hears the cube it touches.
+//! README's "In a Bevy app": the cube is an entity, each frame an app system
+//! (`push_joints`) writes the joints of a tracked hand, and an observer
+//! hears the cube it touches.
 mod tracker; // a stand-in for an XR runtime: a real recorded hand, as OpenXR joints
 
 use bevy::prelude::*;
@@ -9,9 +10,11 @@ use coulomb_hands_bevy::prelude::*;
 fn main() -> Result<AppExit, Box<dyn std::error::Error>> {
     let mut world = InteractionWorld::new(InteractionConfig::default())?;
     world.add_static(&StaticDesc::ground(0.0, 0.5))?;
-    world.add_object(&ObjectDesc::cuboid("cube", glam::Vec3::splat(0.04), 0.05, tracker::CUBE))?;
     let mut app = App::new();
-    app.add_plugins((MinimalPlugins, CoulombHandsPlugin)).insert_resource(HandPhysics::new(world));
+    app.add_plugins((MinimalPlugins, CoulombHandsPlugin::default()));
+    app.insert_resource(HandPhysics::new(world));
+    let cube = ObjectDesc::cuboid("cube", glam::Vec3::splat(0.04), 0.05, glam::Vec3::ZERO);
+    app.world_mut().spawn((ObjectDescription(cube), Transform::from_translation(tracker::CUBE)));
     app.world_mut().spawn(AppHand::new(Side::Right));
     app.add_systems(Update, (push_joints, tracker::exit_when_done));
     app.add_observer(|touch: On<ObjectTouched>, names: Query<&Name>| {

@@ -12,7 +12,7 @@ use coulomb_hands::input::layouts::{Joint, openxr, to_openxr};
 use std::sync::OnceLock;
 
 /// Where the cube sits: 4 cm, on the table at the origin (m).
-pub const CUBE: glam::Vec3 = glam::Vec3::new(0.0, 0.02, 0.0);
+pub const CUBE: Vec3 = Vec3::new(0.0, 0.02, 0.0);
 /// The sweep: from 13 cm left of the cube, at 0.2 m/s, for 1 s (m, m/s, s).
 const START_X: f32 = -0.13;
 const SPEED: f32 = 0.2;

@@ -108,6 +108,6 @@ fn only_a_leap_recording_can_be_head_mounted() {
             .expect_err("a scenario has no worn tracker");
     assert_eq!(
         e.to_string(),
-        "grasp-lift: --scene, --object-at-grasp and --head-mounted go with a recording"
+        "grasp-lift: --scene, --object-at and --head-mounted go with a recording"
     );
 }

@@ -8,6 +8,7 @@ mod head;
 mod keys;
 mod leap;
 mod mouse_hand;
+mod source;
 mod task;
 mod transport;
 mod window;
