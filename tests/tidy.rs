@@ -250,3 +250,115 @@ fn each_crates_top_level_modules_import_each_other_without_cycles() {
         assert!(left.is_empty(), "{src}: these modules import each other in a cycle: {left:?}");
     }
 }
+
+/// The modules that `code` names through `super::` chains of exactly
+/// `depth` links (`super::x`, or each item of `super::{x, y::z}`).
+fn super_paths(code: &str, depth: usize) -> BTreeSet<String> {
+    let chain = "super::".repeat(depth);
+    let mut out = BTreeSet::new();
+    let mut rest = code;
+    while let Some(at) = rest.find(&chain) {
+        let before = &rest[..at];
+        rest = &rest[at + chain.len()..];
+        // A longer chain is another depth's.
+        if before.ends_with("super::") || rest.starts_with("super::") {
+            continue;
+        }
+        let ident =
+            |s: &str| s.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+        if let Some(group) = rest.strip_prefix('{') {
+            // Top-level items of the group, up to its closing brace.
+            let (mut level, mut item) = (0, String::new());
+            for c in group.chars() {
+                match c {
+                    '{' => level += 1,
+                    '}' if level == 0 => break,
+                    '}' => level -= 1,
+                    ',' if level == 0 => {
+                        out.insert(ident(&item));
+                        item.clear();
+                        continue;
+                    }
+                    _ => {}
+                }
+                if level == 0 {
+                    item.push(c);
+                }
+            }
+            out.insert(ident(&item));
+        } else {
+            out.insert(ident(rest));
+        }
+    }
+    out
+}
+
+/// The graph of the child modules of the module whose directory is `dir`
+/// (its path from the crate root `module`, e.g. `pipeline::step`): which
+/// siblings each child's code names, by `super::` or by its `crate::` path.
+fn submodule_graph(dir: &Path, module: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let Ok(entries) = std::fs::read_dir(dir) else { return BTreeMap::new() };
+    let children: BTreeSet<String> = (entries.flatten())
+        .filter_map(|e| e.file_name().to_str().map(|n| n.trim_end_matches(".rs").to_string()))
+        .filter(|n| n != "mod")
+        .collect();
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for path in rust_files(&[dir.strip_prefix(ROOT).unwrap_or(dir).to_str().expect("UTF-8")]) {
+        let rel = path.strip_prefix(dir).expect("under the directory");
+        let names: Vec<&str> = rel.iter().filter_map(|c| c.to_str()).collect();
+        let child = names[0].trim_end_matches(".rs").to_string();
+        if child == "mod" {
+            continue;
+        }
+        // `a.rs` and `a/mod.rs` are `a`, one level below: `a/b.rs` two.
+        let depth = names.len() - usize::from(names.last() == Some(&"mod.rs"));
+        let code = code(&read(&path));
+        let mut uses = super_paths(&code, depth);
+        let prefix = format!("crate::{module}::");
+        let mut rest = code.as_str();
+        while let Some(at) = rest.find(&prefix) {
+            rest = &rest[at + prefix.len()..];
+            uses.insert(rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect());
+        }
+        let siblings: Vec<String> =
+            uses.into_iter().filter(|u| *u != child && children.contains(u)).collect();
+        graph.entry(child).or_default().extend(siblings);
+    }
+    graph
+}
+
+#[test]
+fn each_module_s_submodules_import_each_other_without_cycles() {
+    let mut cyclic = Vec::new();
+    for src in CRATES {
+        let root = Path::new(ROOT).join(src);
+        let mut dirs = vec![];
+        let mut todo = vec![root.clone()];
+        while let Some(dir) = todo.pop() {
+            for entry in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+                if entry.path().is_dir() {
+                    todo.push(entry.path());
+                    dirs.push(entry.path());
+                }
+            }
+        }
+        for dir in dirs {
+            let module = dir.strip_prefix(&root).expect("under src").to_str().expect("UTF-8");
+            let mut left = submodule_graph(&dir, &module.replace('/', "::"));
+            while let Some(leaf) =
+                left.iter().find(|(_, u)| u.iter().all(|m| !left.contains_key(m)))
+            {
+                let leaf = leaf.0.clone();
+                left.remove(&leaf);
+            }
+            if !left.is_empty() {
+                cyclic.push(format!("{}: {left:?}", relative(&dir)));
+            }
+        }
+    }
+    assert!(
+        cyclic.is_empty(),
+        "submodules that import each other in a cycle:\n{}",
+        cyclic.join("\n")
+    );
+}

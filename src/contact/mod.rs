@@ -4,7 +4,13 @@
 //!
 //! * `detect.rs`: the collision driver, which finds bones near objects;
 //! * `anchor.rs`: what a contact holds on to (C, p, its patch's samples);
-//! * [`patch`]: spreading a contact's force over its skin patch;
+//! * `line.rs`: line and area contacts, a patch laid along a bone that
+//!   lies on a face, or over the palm on a plate;
+//! * `roll.rs`: rolling contacts, C and p carried as the surfaces roll;
+//! * [`patch`]: spreading a contact's force over its skin patch, with its
+//!   deviation springs' kernels (`patch/deviation.rs`, and eight samples
+//!   at a time for AVX2 beneath it, `patch/deviation/wide8.rs`);
+//! * `lanes.rs`: four vectors at a time, the patch's SIMD arithmetic;
 //! * [`surface`]: moving C along the surface by inverse ray casts;
 //! * [`event`]: begin/end events.
 //!
@@ -33,15 +39,12 @@
 
 pub(crate) mod anchor;
 pub(crate) mod detect;
-mod deviation;
 pub mod event;
 pub(crate) mod lanes;
 mod line;
 pub mod patch;
 mod roll;
 pub mod surface;
-#[cfg(target_arch = "x86_64")]
-mod wide8;
 
 pub use event::{ContactEvent, ContactEventKind};
 
@@ -91,7 +94,7 @@ pub struct Contact {
 /// A bone as seen by one step: its hand's pose now and one step ago (the
 /// same pose on the hand's first tracked step). It borrows the poses, so
 /// each stage looks it up afresh: cheaper than carrying two shapes and two
-/// palms (224 bytes) from stage to stage.
+/// palms from stage to stage.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct BoneMotion<'h> {
     pub bone: Bone,
@@ -413,7 +416,7 @@ impl Contact {
             spin: object.angvel - anchor.rolled,
         };
         self.anchor.skin = Some((now, skin));
-        patch::spread(&step, &mut self.anchor, object, scratch, &mut self.samples);
+        patch::spread(&step, &mut self.anchor.samples, object, scratch, &mut self.samples);
         self.point = site.c;
         self.normal = site.n;
     }

@@ -8,7 +8,8 @@
 //! but resist twisting and rocking of the object against the skin: the
 //! stabilising effect the thesis reports for 9 samples over 1.
 
-use super::anchor::Anchor;
+mod deviation;
+
 use super::lanes::{self, Chunk, Vec3Lanes};
 use super::surface;
 use super::{LawSettings, ObjectView};
@@ -305,7 +306,7 @@ impl PatchScratch {
 #[inline(always)]
 pub(crate) fn spread(
     step: &PatchStep,
-    anchor: &mut Anchor,
+    samples: &mut Samples,
     object: &ObjectView,
     scratch: &mut PatchScratch,
     points: &mut Vec<Vec3>,
@@ -313,7 +314,6 @@ pub(crate) fn spread(
     let pose = &object.pose;
     let object_rot = lanes::splat_mat(&Mat3::from_quat(pose.rotation));
     let origin = lanes::splat(pose.translation);
-    let samples = &mut anchor.samples;
     let len = samples.object.len();
     scratch.deviations.reset(len);
     scratch.points.reset(len);
@@ -322,7 +322,7 @@ pub(crate) fn spread(
         scratch.points.chunks_mut()[j] = ci;
     }
     if step.deviation_springs {
-        super::deviation::deviate(step, samples, object, scratch);
+        deviation::deviate(step, samples, object, scratch);
     } else {
         // The thesis's patch: each sample carries f/N where it lies.
         scratch.deviations.chunks_mut().fill([f32x4::ZERO; 3]);

@@ -18,10 +18,10 @@ use rapier3d::dynamics::{FrictionModel, IntegrationParameters};
 /// nowhere near touching. The solver study of the book's "Benchmarks" found
 /// that a 5 mm margin keeps every scenario's checks (the tool knocking the
 /// tower, both Jenga pulls, the handover), the recordings' verdicts and the
-/// held boxes, at 31 % fewer of rapier's instructions on the awake
-/// reference scene. Fewer solver iterations saved more but left a box in an
-/// opened hand of the grab recording, so the objects the hands push keep
-/// rapier's 4 ([`HAND_SUBSTEPS`]).
+/// held boxes, with fewer of rapier's instructions on the awake reference
+/// scene (the figures are in the book's table). Fewer solver iterations
+/// saved more but left a box in an opened hand of the grab recording, so
+/// the objects the hands push keep rapier's 4 ([`HAND_SUBSTEPS`]).
 pub const HAPTIC_STEP: f32 = 0.002;
 /// The approach speed (m/s) rapier's speculative contacts cover in one step
 /// at the haptic rate: 5 mm at 1 ms. A faster body may sink into another

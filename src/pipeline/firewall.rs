@@ -17,8 +17,9 @@
 //! [`InteractionWorld::physics_mut`] is outside the firewall.
 //! [`InteractionWorld::first_non_finite`] checks the result.
 
+use super::InteractionWorld;
 use super::config::InteractionConfig;
-use super::world::{InteractionWorld, WorldError};
+use super::error::WorldError;
 use crate::contact::lanes::Chunk;
 use crate::friction;
 use crate::hand::HandPose;

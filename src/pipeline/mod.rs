@@ -5,9 +5,12 @@
 //!   parameters it implies;
 //! * [`method`]: the methods the evaluation compares, as configs;
 //! * [`world`]: the world's API (add objects and hands, set poses, read
-//!   contacts, events and states);
-//! * [`step`]: one step, stage by stage;
-//! * `stability.rs`: the stability limit of explicit contact springs;
+//!   contacts, events and states); the world's state, [`InteractionWorld`]
+//!   and its slots, is defined here, so that every stage and the API read
+//!   it from their parent, and import no sibling that imports them back;
+//! * `error.rs`: [`WorldError`];
+//! * [`step`]: one step, stage by stage (the stability limit of explicit
+//!   contact springs, stage 5, among them);
 //! * `firewall.rs`: the NaN firewall, the one gate of every value that
 //!   enters rapier, and [`InteractionWorld::first_non_finite`];
 //! * [`record`]: the hook that sees every call, for session recording.
@@ -22,10 +25,10 @@
 //! * Same calls, same results: all iteration is in a fixed order.
 
 pub mod config;
+mod error;
 pub(crate) mod firewall;
 pub mod method;
 pub mod record;
-pub(crate) mod stability;
 pub mod step;
 pub mod world;
 
@@ -33,6 +36,91 @@ pub use config::{
     ConfigError, ENGINE_SUBSTEPS, HAND_SUBSTEPS, HAPTIC_STEP, InteractionConfig, ObjectFriction,
     SPECULATIVE_SPEED,
 };
+pub use error::WorldError;
 pub use method::Method;
 pub use record::{Call, Recorder};
-pub use world::{InteractionWorld, ObjectState, WorldError};
+pub use world::ObjectState;
+
+use crate::contact::{Contact, ContactEvent};
+use crate::hand::acting::ActingHand;
+use crate::hand::{HandPose, Side};
+use crate::scene::Material;
+use glam::Vec3;
+use rapier3d::prelude::{ColliderHandle, PhysicsWorld, RigidBodyHandle};
+use step::StepScratch;
+
+/// What the world keeps per object besides rapier's body.
+pub(in crate::pipeline) struct ObjectSlot {
+    pub name: String,
+    pub body: RigidBodyHandle,
+    pub collider: ColliderHandle,
+    pub material: Material,
+    /// Contact stiffness γ (N/m) before the stability limit.
+    pub gamma: f32,
+    /// Bounding-sphere diameter (m).
+    pub diameter: f32,
+    /// Mass (kg).
+    pub mass: f32,
+    /// Eq. 3.10 of the last step (N).
+    pub hand_force: Vec3,
+    /// Set by [`InteractionWorld::reseat_contacts`]: its contacts end at
+    /// the next step and begin afresh from the hand's pose then.
+    pub reseat: bool,
+    /// Whether it is in [`InteractionWorld::forced`].
+    pub forced: bool,
+    /// The substeps `set_substeps` added to its body this step, to be given
+    /// back in stage 1.
+    pub raised: Option<step::Raised>,
+    /// Its grab, for the grab baselines.
+    pub grab: step::GrabSlot,
+    /// Set by [`InteractionWorld::remove_object`]: its body and collider
+    /// are gone from rapier, and its id names nothing.
+    pub removed: bool,
+}
+
+/// What the world keeps per hand.
+pub(in crate::pipeline) struct HandSlot {
+    pub side: Side,
+    /// The hand that acts: the tracked hand through the config's tracking
+    /// filter, from the step's first stage (`step/follow.rs`).
+    pub pose: Option<HandPose>,
+    /// The pose of the previous step, for bone velocities.
+    pub prev: Option<HandPose>,
+    /// The pose the tracker last set.
+    pub tracked: Option<HandPose>,
+    /// The tracking filter's state, with the config's filter.
+    pub acting: Option<ActingHand>,
+    /// Which pose `pose` is, and which `prev`: a count of the poses set,
+    /// so that what was computed from a pose is known to hold for it.
+    pub pose_mark: u64,
+    pub prev_mark: u64,
+}
+
+/// A rapier world plus hands that act on its objects only through Coulomb
+/// friction contact forces.
+pub struct InteractionWorld {
+    pub(in crate::pipeline) physics: PhysicsWorld,
+    pub(in crate::pipeline) config: InteractionConfig,
+    pub(in crate::pipeline) objects: Vec<ObjectSlot>,
+    pub(in crate::pipeline) hands: Vec<HandSlot>,
+    /// Sorted by (object, hand, bone): each object's contacts are one run.
+    pub(in crate::pipeline) contacts: Vec<Contact>,
+    pub(in crate::pipeline) events: Vec<ContactEvent>,
+    pub(in crate::pipeline) time: f64,
+    pub(in crate::pipeline) scratch: StepScratch,
+    /// Objects added or put down since rapier's last step: its broad phase
+    /// has not seen them where they are (`step/near.rs`).
+    pub(in crate::pipeline) unindexed: Vec<u32>,
+    /// Objects given hand forces this step, whose forces the next step
+    /// clears (`step/clear.rs`), each once ([`ObjectSlot::forced`]).
+    pub(in crate::pipeline) forced: Vec<u32>,
+    /// Objects whose contacts end at the next step ([`ObjectSlot::reseat`]).
+    pub(in crate::pipeline) reseating: Vec<u32>,
+    /// Objects a grab baseline held after the last step, ascending: with
+    /// the touched ones, all that stage 8 (`step/grab.rs`) visits.
+    pub(in crate::pipeline) grabbed: Vec<u32>,
+    /// Whether a program may have written to rapier ([`Self::physics_mut`])
+    /// since the last step began: then every body's forces are cleared.
+    pub(in crate::pipeline) external: bool,
+    pub(in crate::pipeline) recorder: Option<Box<dyn Recorder>>,
+}

@@ -2,39 +2,21 @@
 //! its hands and read what happened. One step is in [`super::step`].
 
 use super::config::InteractionConfig;
+use super::error::WorldError;
 use super::firewall;
 use super::record::{Call, Recorder};
 use super::step::{StepScratch, near};
+use super::{HandSlot, InteractionWorld, ObjectSlot};
 use crate::contact::{Contact, ContactEvent};
 use crate::hand::acting::ActingHand;
-use crate::hand::{HandId, HandPose, PoseError, Side};
-use crate::scene::{Material, ObjectDesc, ObjectError, ObjectId, Scene, StaticDesc};
+use crate::hand::{HandId, HandPose, Side};
+use crate::scene::{Material, ObjectDesc, ObjectId, Scene, StaticDesc};
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
 use rapier3d::prelude::{
     ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
 };
 use std::any::Any;
-
-/// Errors of [`InteractionWorld`] calls.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum WorldError {
-    /// A hand pose was rejected.
-    #[error(transparent)]
-    Pose(#[from] PoseError),
-    /// An object or static description was rejected.
-    #[error(transparent)]
-    Object(#[from] ObjectError),
-    /// The config was rejected.
-    #[error(transparent)]
-    Config(#[from] super::ConfigError),
-    /// No hand has this id.
-    #[error("{0} does not exist")]
-    NoSuchHand(HandId),
-    /// No object has this id.
-    #[error("{0} does not exist")]
-    NoSuchObject(ObjectId),
-}
 
 /// Pose, velocity and hand force of an object.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,82 +34,6 @@ pub struct ObjectState {
     pub hand_force: Vec3,
     /// Whether rapier has put it to sleep.
     pub sleeping: bool,
-}
-
-/// What the world keeps per object besides rapier's body.
-pub(super) struct ObjectSlot {
-    pub name: String,
-    pub body: RigidBodyHandle,
-    pub collider: ColliderHandle,
-    pub material: Material,
-    /// Contact stiffness γ (N/m) before the stability limit.
-    pub gamma: f32,
-    /// Bounding-sphere diameter (m).
-    pub diameter: f32,
-    /// Mass (kg).
-    pub mass: f32,
-    /// Eq. 3.10 of the last step (N).
-    pub hand_force: Vec3,
-    /// Set by [`InteractionWorld::reseat_contacts`]: its contacts end at
-    /// the next step and begin afresh from the hand's pose then.
-    pub reseat: bool,
-    /// Whether it is in [`InteractionWorld::forced`].
-    pub forced: bool,
-    /// The substeps `set_substeps` added to its body this step, to be given
-    /// back in stage 1.
-    pub raised: Option<super::step::Raised>,
-    /// Its grab, for the grab baselines.
-    pub grab: super::step::GrabSlot,
-    /// Set by [`InteractionWorld::remove_object`]: its body and collider
-    /// are gone from rapier, and its id names nothing.
-    pub removed: bool,
-}
-
-/// What the world keeps per hand.
-pub(super) struct HandSlot {
-    pub side: Side,
-    /// The hand that acts: the tracked hand through the config's tracking
-    /// filter, from the step's first stage (`step/follow.rs`).
-    pub pose: Option<HandPose>,
-    /// The pose of the previous step, for bone velocities.
-    pub prev: Option<HandPose>,
-    /// The pose the tracker last set.
-    pub tracked: Option<HandPose>,
-    /// The tracking filter's state, with the config's filter.
-    pub acting: Option<ActingHand>,
-    /// Which pose `pose` is, and which `prev`: a count of the poses set,
-    /// so that what was computed from a pose is known to hold for it.
-    pub pose_mark: u64,
-    pub prev_mark: u64,
-}
-
-/// A rapier world plus hands that act on its objects only through Coulomb
-/// friction contact forces.
-pub struct InteractionWorld {
-    pub(super) physics: PhysicsWorld,
-    pub(super) config: InteractionConfig,
-    pub(super) objects: Vec<ObjectSlot>,
-    pub(super) hands: Vec<HandSlot>,
-    /// Sorted by (object, hand, bone): each object's contacts are one run.
-    pub(super) contacts: Vec<Contact>,
-    pub(super) events: Vec<ContactEvent>,
-    pub(super) time: f64,
-    pub(super) scratch: StepScratch,
-    /// Objects added or put down since rapier's last step: its broad phase
-    /// has not seen them where they are (`step/near.rs`).
-    pub(super) unindexed: Vec<u32>,
-    /// Objects given hand forces this step, whose forces the next step
-    /// clears (`step/clear.rs`), each once ([`ObjectSlot::forced`]).
-    pub(super) forced: Vec<u32>,
-    /// Objects whose contacts end at the next step ([`ObjectSlot::reseat`]).
-    pub(super) reseating: Vec<u32>,
-    /// Objects a grab baseline held after the last step, ascending: with
-    /// the touched ones, all that stage 8 (`step/grab.rs`) visits.
-    pub(super) grabbed: Vec<u32>,
-    /// Whether a program may have written to rapier ([`Self::physics_mut`])
-    /// since the last step began: then every body's forces are cleared.
-    pub(super) external: bool,
-    recorder: Option<Box<dyn Recorder>>,
 }
 
 impl InteractionWorld {

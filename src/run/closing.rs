@@ -9,7 +9,7 @@ use super::RunError;
 use super::drive::{Observer, StepView};
 use super::grasp::spans::Signals;
 use super::grasp::{GraspSite, MIN_HOLD, SAMPLE_STEP, find_grasps, site_at, tracker_holds};
-use super::replay::{GraspObject, is_gripped, is_squeezed};
+use super::held::{GraspObject, is_gripped, is_squeezed};
 use crate::friction::settling_time;
 use crate::input::playback::Playback;
 use crate::pipeline::{InteractionWorld, WorldError};

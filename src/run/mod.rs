@@ -4,7 +4,9 @@
 //! * [`drive`]: the driver loop, hand sources and observers;
 //! * [`observe`]: the trace writer and the per-object summary;
 //! * [`replay`]: recordings replayed, with objects at a recorded grasp
-//!   ([`grasp`] finds where a recorded hand closes);
+//!   ([`grasp`] finds where a recorded hand closes, [`closing`] judges
+//!   each closing's hold, [`held`] is the object put there and whether a
+//!   hand holds it);
 //! * [`soak`]: a recording replayed in a loop in one world, watching
 //!   memory and speed by the system's clock (not on wasm32);
 //! * [`live`]: a live Leap Motion stream (feature `live`, on by default);
@@ -21,6 +23,7 @@ pub mod closing;
 pub mod demo;
 pub mod drive;
 pub mod grasp;
+pub mod held;
 #[cfg(feature = "live")]
 pub mod live;
 pub mod observe;

@@ -15,6 +15,7 @@
 //! shown as `—`, they and any beyond 10¹² are left out of plots, and empty
 //! lists give empty plots.
 
+mod markup;
 mod page;
 mod plots;
 mod study;

@@ -1,6 +1,7 @@
 //! The report page: [`html`] turns a [`ReportData`] into one HTML file
 //! with inline CSS and SVG, and nothing loaded from elsewhere.
 
+use super::markup::{escape, plot, plot_with_legend, table};
 use super::plots;
 use super::study_page::{self, ABLATION_COMMAND, SWEEP_COMMAND};
 use super::{
@@ -93,22 +94,6 @@ pub fn html(data: &ReportData) -> String {
     p
 }
 
-/// `text` with `<`, `>`, `&` and quotes escaped.
-pub fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '&' => out.push_str("&amp;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
-
 /// `v` with `decimals`, or `—` if it is not finite.
 fn num(v: f64, decimals: usize) -> String {
     if v.is_finite() { format!("{v:.decimals$}") } else { "—".to_string() }
@@ -127,34 +112,6 @@ fn slug(prefix: &str, name: &str) -> String {
 
 fn verdict_class(passed: bool) -> (&'static str, &'static str) {
     if passed { ("pass", "pass") } else { ("fail", "FAIL") }
-}
-
-/// A table: `head` cells (none: no head row), then rows of cells already in HTML (`num`
-/// cells are right-aligned when they start with `#`).
-pub(super) fn table(p: &mut String, head: &[&str], rows: &[Vec<String>]) {
-    p.push_str("<table>\n");
-    if !head.is_empty() {
-        p.push_str("<tr>");
-        for h in head {
-            let _ = write!(p, "<th>{}</th>", escape(h));
-        }
-        p.push_str("</tr>\n");
-    }
-    for row in rows {
-        p.push_str("<tr>");
-        for cell in row {
-            match cell.strip_prefix('#') {
-                Some(n) => {
-                    let _ = write!(p, "<td class=\"num\">{n}</td>");
-                }
-                None => {
-                    let _ = write!(p, "<td>{cell}</td>");
-                }
-            }
-        }
-        p.push_str("</tr>\n");
-    }
-    p.push_str("</table>\n");
 }
 
 /// A right-aligned number cell for [`table`].
@@ -209,20 +166,6 @@ fn absent(p: &mut String, why: &str, how: Option<(&str, &str, &str)>) {
         None => {}
     }
     p.push_str("</p>\n");
-}
-
-pub(super) fn plot(p: &mut String, svg: &str, caption: &str) {
-    plot_with_legend(p, svg, "", caption);
-}
-
-/// A plot with a caption that starts with `legend` (HTML).
-fn plot_with_legend(p: &mut String, svg: &str, legend: &str, caption: &str) {
-    let _ = writeln!(
-        p,
-        "<figure class=\"plot\">\n{svg}\n<figcaption class=\"caption\">{legend}{}</figcaption>\n\
-         </figure>",
-        escape(caption)
-    );
 }
 
 fn header(p: &mut String, data: &ReportData) {

@@ -48,7 +48,7 @@ pub(super) fn svg(size: (u32, u32), draw: impl FnOnce(&Area) -> Drawn) -> String
         Ok(()) => text,
         Err(e) => format!(
             "<p class=\"error\">The plot could not be drawn: {}</p>",
-            super::page::escape(&e.to_string())
+            super::markup::escape(&e.to_string())
         ),
     }
 }

@@ -2,7 +2,7 @@
 //! study over tracking noise (a plot per strategy and a table) and the
 //! thesis's law given its departures back one at a time (a table).
 
-use super::page::{escape, plot, table};
+use super::markup::{escape, plot, table};
 use super::plots::{Drawn, PALETTE, chart, font, legend_box, plottable, svg, tick};
 use super::{Ablation, Estimate, NoiseSummary, SweepRow, SweepStudy};
 use plotters::prelude::*;

@@ -149,14 +149,14 @@ fn full() -> ReportData {
 fn with_every_section_absent_the_page_says_how_to_make_them() {
     let page = html(&ReportData::default());
     for heading in SECTIONS {
-        assert!(page.contains(&page::escape(heading)), "{heading}");
+        assert!(page.contains(&markup::escape(heading)), "{heading}");
     }
     assert_eq!(svgs(&page), 0);
     for text in THESIS_NUMBERS.iter().chain(&["0.6 ms at 6 bones, 1.5 ms at 32 bones"]) {
         assert!(page.contains(text), "{text}");
     }
     for command in [ACCURACY_COMMAND, BENCH_COMMAND, SWEEP_COMMAND, ABLATION_COMMAND] {
-        assert!(page.contains(&page::escape(command)), "{command}");
+        assert!(page.contains(&markup::escape(command)), "{command}");
     }
     assert!(page.contains("--accuracy accuracy.json") && page.contains("--bench bench.json"));
     assert!(page.contains("--sweep sweep.json") && page.contains("--ablation ablation.json"));
@@ -167,7 +167,7 @@ fn with_every_section_absent_the_page_says_how_to_make_them() {
 fn with_every_section_present_there_is_one_svg_per_plot() {
     let page = html(&full());
     for heading in SECTIONS {
-        assert!(page.contains(&page::escape(heading)), "{heading}");
+        assert!(page.contains(&markup::escape(heading)), "{heading}");
     }
     // Accuracy 1, noise 4 (error and drops, lift and slide), performance 3
     // (linear, log, reference), one per scenario.

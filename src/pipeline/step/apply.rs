@@ -1,6 +1,6 @@
 //! Stage 7: a contact's forces go to rapier.
 
-use super::update::Stage;
+use super::Stage;
 use crate::contact::lanes;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;

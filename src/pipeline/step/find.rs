@@ -1,11 +1,11 @@
 //! Stage 3: new contacts begin where bones come within the contact offset.
 
 use super::near::Nearby;
+use super::stability::StabilityScale;
 use super::{Candidate, StepScratch};
 use crate::contact::Contact;
 use crate::hand::{Bone, HandId};
 use crate::pipeline::InteractionWorld;
-use crate::pipeline::stability::StabilityScale;
 
 impl InteractionWorld {
     /// Begins a contact for every bone within the contact offset of an

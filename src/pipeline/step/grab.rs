@@ -6,8 +6,8 @@
 use crate::contact::Contact;
 use crate::grab::{GrabMethod, heuristic, kinematic};
 use crate::hand::{HandId, HandPose};
+use crate::pipeline::InteractionWorld;
 use crate::pipeline::firewall;
-use crate::pipeline::world::InteractionWorld;
 use glam::Vec3;
 use rapier3d::math::Pose;
 use rapier3d::prelude::RigidBodyType;

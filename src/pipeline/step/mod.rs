@@ -11,7 +11,7 @@
 //!    the objects rapier's broad phase puts near each hand (`near.rs`);
 //! 4. `share.rs`: how each contact presses, and its share of its virtual
 //!    finger's γ;
-//! 5. `../stability.rs`: each object's stability limit on γ and damping;
+//! 5. `stability.rs`: each object's stability limit on γ and damping;
 //! 6. `update.rs`: each contact evaluates the contact law;
 //! 7. `apply.rs`: its forces go to rapier, and are added to its object's
 //!    total for [`crate::ObjectState::hand_force`].
@@ -37,6 +37,7 @@ mod grab;
 mod keep;
 pub(super) mod near;
 mod share;
+pub(crate) mod stability;
 mod substeps;
 mod update;
 
@@ -47,8 +48,7 @@ pub(crate) use substeps::Raised;
 
 use super::config::InteractionConfig;
 use super::record::Call;
-use super::stability::{StabilityScale, nominal_damping};
-use super::world::{HandSlot, InteractionWorld, ObjectSlot};
+use super::{HandSlot, InteractionWorld, ObjectSlot};
 use crate::contact::detect::{Detector, Proximity};
 use crate::contact::patch::PatchScratch;
 use crate::contact::{
@@ -57,7 +57,41 @@ use crate::contact::{
 use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
+use apply::RunForces;
 use rapier3d::prelude::{ColliderSet, RigidBodySet};
+use stability::{StabilityScale, nominal_damping};
+
+/// Stages 6 and 7's borrows of the world (their methods are in
+/// `update.rs` and `apply.rs`, children of this module, which see its
+/// fields): what they read (the colliders,
+/// for the objects' shapes) apart from what they write (the bodies'
+/// forces, the events), so that one object's view serves a run of its
+/// contacts.
+struct Stage<'w> {
+    colliders: &'w ColliderSet,
+    config: &'w InteractionConfig,
+    /// The hands, whose poses the contacts' bone motions borrow.
+    hands: &'w [HandSlot],
+    /// Per contact, in update order: its press and its share of its
+    /// virtual finger's γ (stage 4).
+    presses: &'w [Press],
+    shares: &'w [f32],
+    /// Per object, its stability limit (stage 5).
+    limits: &'w [StabilityScale],
+    settings: &'w LawSettings,
+    detector: &'w mut Detector,
+    objects: &'w mut [ObjectSlot],
+    bodies: &'w mut RigidBodySet,
+    forced: &'w mut Vec<u32>,
+    events: &'w mut Vec<ContactEvent>,
+    time: f64,
+    patch: &'w mut PatchScratch,
+    /// The last object's view under its stability limit, before any
+    /// contact's share: applying forces changes none of what it holds.
+    view: Option<ObjectView<'w>>,
+    /// The forces of the last object's run of contacts, not yet written.
+    run: Option<RunForces>,
+}
 
 impl InteractionWorld {
     /// One full step: hand forces, then the physics engine.
@@ -129,8 +163,8 @@ impl InteractionWorld {
 /// AVX2 (`avx2.rs`), else for the target's baseline. The same IEEE
 /// operations in either encoding and no fused multiply-add, so the same
 /// bits (`run/scenario/builds.rs`); AVX2's three-operand forms spare the
-/// register copies of the patch's lane arithmetic (−11 % of the layer's
-/// instructions).
+/// register copies of the patch's lane arithmetic (the saving is in the
+/// book's "Benchmarks").
 fn contact_stages(world: &mut InteractionWorld, step: &mut StepScratch) {
     #[cfg(target_arch = "x86_64")]
     if avx2::enabled() {

@@ -2,11 +2,11 @@
 //! hand's virtual fingers ([`crate::friction::grip`]).
 
 use super::StepScratch;
+use super::stability::StabilityScale;
 use crate::contact::{Contact, ObjectView, Press};
 use crate::friction;
 use crate::hand::HandId;
 use crate::pipeline::InteractionWorld;
-use crate::pipeline::stability::StabilityScale;
 use crate::scene::ObjectId;
 
 impl InteractionWorld {

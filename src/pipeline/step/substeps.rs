@@ -3,7 +3,7 @@
 //!
 //! rapier adds a body's user force to its velocity substep by substep, so
 //! the substeps decide how the hands' explicit springs and dampers move
-//! what they push (`pipeline::stability`). Those run at least
+//! what they push (`step/stability.rs`). Those run at least
 //! [`HAND_SUBSTEPS`] always. The bodies no hand pushes may run fewer
 //! ([`InteractionConfig::engine_substeps`]): a tower under a hand is mostly
 //! bodies the hand does not touch.

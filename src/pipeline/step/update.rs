@@ -2,16 +2,10 @@
 //! law, and its forces go to rapier (`apply.rs`) while its patch is still
 //! in cache.
 
-use super::apply::RunForces;
-use super::{Candidate, StepScratch, motion_of, push_event, view_of};
-use crate::contact::detect::{Detector, Proximity};
-use crate::contact::patch::PatchScratch;
-use crate::contact::{Contact, ContactEvent, ContactEventKind, LawSettings, ObjectView, Press};
+use super::{Candidate, Stage, StepScratch, motion_of, push_event, view_of};
+use crate::contact::detect::Proximity;
+use crate::contact::{Contact, ContactEventKind};
 use crate::pipeline::InteractionWorld;
-use crate::pipeline::config::InteractionConfig;
-use crate::pipeline::stability::StabilityScale;
-use crate::pipeline::world::{HandSlot, ObjectSlot};
-use rapier3d::prelude::{ColliderSet, RigidBodySet};
 
 impl InteractionWorld {
     /// Updates every contact and applies its forces: the kept ones in
@@ -68,36 +62,6 @@ impl InteractionWorld {
         }
         self.contacts = contacts;
     }
-}
-
-/// Stages 6 and 7's borrows of the world: what they read (the colliders,
-/// for the objects' shapes) apart from what they write (the bodies'
-/// forces, the events), so that one object's view serves a run of its
-/// contacts.
-pub(super) struct Stage<'w> {
-    colliders: &'w ColliderSet,
-    config: &'w InteractionConfig,
-    /// The hands, whose poses the contacts' bone motions borrow.
-    hands: &'w [HandSlot],
-    /// Per contact, in update order: its press and its share of its
-    /// virtual finger's γ (stage 4).
-    presses: &'w [Press],
-    shares: &'w [f32],
-    /// Per object, its stability limit (stage 5).
-    limits: &'w [StabilityScale],
-    settings: &'w LawSettings,
-    detector: &'w mut Detector,
-    pub(super) objects: &'w mut [ObjectSlot],
-    pub(super) bodies: &'w mut RigidBodySet,
-    pub(super) forced: &'w mut Vec<u32>,
-    events: &'w mut Vec<ContactEvent>,
-    time: f64,
-    pub(super) patch: &'w mut PatchScratch,
-    /// The last object's view under its stability limit, before any
-    /// contact's share: applying forces changes none of what it holds.
-    view: Option<ObjectView<'w>>,
-    /// The forces of the last object's run of contacts, not yet written.
-    pub(super) run: Option<RunForces>,
 }
 
 impl Stage<'_> {

@@ -15,10 +15,10 @@
 //! force ratio, is unchanged). This only binds for light objects in
 //! many-finger grasps, or for long steps.
 
-use super::config::InteractionConfig;
-use super::step::StepScratch;
-use super::world::{InteractionWorld, ObjectSlot};
+use super::StepScratch;
 use crate::friction;
+use crate::pipeline::config::InteractionConfig;
+use crate::pipeline::{InteractionWorld, ObjectSlot};
 use glam::Vec3;
 
 /// Factors (≤ 1) on an object's contact stiffness and damping that keep the

@@ -1,11 +1,11 @@
-//! The deviation springs (`deviation.rs`) eight samples at a time, for the
-//! AVX2 build: two chunks of [`super::lanes`] side by side in 256-bit
+//! The deviation springs ([`super`]) eight samples at a time, for the
+//! AVX2 build: two chunks of [`crate::contact::lanes`] side by side in 256-bit
 //! registers. Each lane does `lanes.rs`'s operations in the same order,
 //! with no fused multiply-add, so the same bits as four at a time.
 
-use super::deviation::{Head, Springs};
-use super::lanes::{Chunk, Mat3Lanes};
-use super::patch::{PatchScratch, Samples};
+use super::{Head, Springs};
+use crate::contact::lanes::{Chunk, Mat3Lanes};
+use crate::contact::patch::{PatchScratch, Samples};
 use std::arch::x86_64::{
     __m256, _CMP_GT_OS, _mm256_add_ps, _mm256_and_ps, _mm256_castps256_ps128, _mm256_cmp_ps,
     _mm256_extractf128_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps,
@@ -103,7 +103,7 @@ fn mat_mul(m: &Mat3Lanes, v: Chunk8) -> Chunk8 {
     [row(0), row(1), row(2)]
 }
 
-/// Chunks `j` and `j + 1` of the deviations ([`super::deviation::deviate`]),
+/// Chunks `j` and `j + 1` of the deviations ([`super::deviate`]),
 /// eight samples at once. If any of them slips, nothing is written, and
 /// the two chunks' heads are returned for the four-lane slip and tail.
 #[target_feature(enable = "avx2")]

@@ -1,11 +1,14 @@
-//! A skin patch's deviation springs (`patch.rs`): how far each sample's
+//! A skin patch's deviation springs ([`super`]): how far each sample's
 //! point on the object has moved from its point on the skin, four samples
 //! at a time, or eight in the AVX2 build (`wide8.rs`).
 
-use super::ObjectView;
-use super::lanes::{self, Chunk, LANES, Mat3Lanes};
-use super::patch::{PatchScratch, PatchStep, Samples, damping_lag};
-use super::surface;
+#[cfg(target_arch = "x86_64")]
+mod wide8;
+
+use super::{PatchScratch, PatchStep, Samples, damping_lag};
+use crate::contact::ObjectView;
+use crate::contact::lanes::{self, Chunk, LANES, Mat3Lanes};
+use crate::contact::surface;
 use crate::friction::{slipped_stretch, static_stretch_squared};
 use wide::f32x4;
 
@@ -97,7 +100,7 @@ impl Springs {
 /// tangentially, slipped back to its own share of the cone where it is
 /// beyond it (its object point moves along the surface); plus the damping
 /// of its rate, folded in as extra stretch; normally, scaled to the
-/// [`super::patch::Rocking`] spring. Samples that slip move their points in
+/// [`super::Rocking`] spring. Samples that slip move their points in
 /// `scratch.points` and `samples.object`.
 ///
 /// In the AVX2 build ([`PatchScratch::avx2`]), two chunks at a time: the
@@ -117,7 +120,7 @@ pub(super) fn deviate(
         while j + 2 <= chunks {
             // SAFETY: `avx2` is set only by the AVX2 build of the contact
             // stages, which runs only where the CPU has AVX2.
-            let slipping = unsafe { super::wide8::deviate_two(&springs, samples, scratch, j) };
+            let slipping = unsafe { wide8::deviate_two(&springs, samples, scratch, j) };
             if let Some(heads) = slipping {
                 for (k, head) in heads.into_iter().enumerate() {
                     finish(step, &springs, samples, object, scratch, j + k, head);
