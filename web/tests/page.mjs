@@ -15,7 +15,8 @@ import { serve, browser as launch, open, check } from './browser.mjs';
 const reference = JSON.parse(await fs.readFile(process.argv[2], 'utf8'));
 // Scenarios with rolling contacts (opt-in): not yet the same bits in wasm as natively (their
 // last digits differ, 1.6422144 against 1.6422147 m/s²; contact/roll.rs uses std's hypot and
-// glam's acos, which may round differently there), so their reports are compared to 1e-5.
+// glam's to_scaled_axis, whose atan2 rounds differently there), so their reports are compared
+// to 1e-5.
 const ROLLING = new Set(['ball-roll']);
 const server = await serve();
 const browser = await launch();
