@@ -110,7 +110,9 @@ impl Curvature {
     /// curvature): `r` itself where it is singular.
     fn inverse_times(self, r: [f32; 2]) -> [f32; 2] {
         let det = self.xx * self.yy - self.xy * self.xy;
-        if !(det.abs() > f32::EPSILON * (self.xx * self.xx + self.yy * self.yy)) {
+        // Not a number is not invertible either.
+        let invertible = det.abs() > f32::EPSILON * (self.xx * self.xx + self.yy * self.yy);
+        if !invertible {
             return r;
         }
         [(self.yy * r[0] - self.xy * r[1]) / det, (self.xx * r[1] - self.xy * r[0]) / det]
@@ -147,8 +149,10 @@ impl Curvature {
         // K − λI is the larger; the other is at right angles to it.
         let high = mean + spread;
         let (a, b) = ([xy, high - xx], [high - yy, xy]);
-        let e = if a[0].hypot(a[1]) >= b[0].hypot(b[1]) { a } else { b };
-        let len = e[0].hypot(e[1]);
+        // √(x² + y²), not `hypot`: the same IEEE operations on every target.
+        let length = |v: [f32; 2]| (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let e = if length(a) >= length(b) { a } else { b };
+        let len = length(e);
         let e1 = [e[0] / len, e[1] / len];
         let e2 = [-e1[1], e1[0]];
         let mut moved = [0.0; 2];
@@ -257,7 +261,7 @@ impl Anchor {
         let skin_before = self.bone.rotation(motion.prev(), motion.palm_prev());
         let turn = (skin_now * skin_before.inverse()).normalize();
         let turn = if turn.w < 0.0 { -turn } else { turn };
-        let relative = object.angvel - turn.to_scaled_axis() / dt;
+        let relative = object.angvel - rotation_vector(turn) / dt;
         let turning = relative - relative.dot(n) * n;
         let turn = turning.length() * dt;
         if turn.is_nan() || turn < LEAST_TURN {
@@ -482,6 +486,15 @@ impl Anchor {
     }
 }
 
+/// A unit quaternion's rotation vector (its axis times its angle, rad), as
+/// glam's `to_scaled_axis`, but with libm's `atan2`: the same bits on
+/// every target, so that a rolling run in WebAssembly is the native one.
+fn rotation_vector(q: Quat) -> Vec3 {
+    let v = Vec3::new(q.x, q.y, q.z);
+    let length = v.length();
+    if length >= 1.0e-8 { v / length * (2.0 * libm::atan2f(length, q.w)) } else { Vec3::ZERO }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -510,5 +523,15 @@ mod tests {
         // A flat face: nothing rolls.
         assert_eq!(Curvature::default().solve(r), [0.0; 2]);
         assert!(!Curvature::default().curved());
+    }
+
+    #[test]
+    fn the_rotation_vector_is_glam_s_scaled_axis() {
+        for (axis, angle) in [(Vec3::Y, 0.3), (Vec3::new(1.0, -2.0, 0.5), 2.9), (Vec3::Z, 1e-5)] {
+            let q = Quat::from_axis_angle(axis.normalize(), angle);
+            let (ours, glam) = (rotation_vector(q), q.to_scaled_axis());
+            assert!((ours - glam).length() <= 1e-6 * angle.max(1e-3), "{ours} vs {glam}");
+        }
+        assert_eq!(rotation_vector(Quat::IDENTITY), Vec3::ZERO);
     }
 }
