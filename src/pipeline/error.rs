@@ -3,7 +3,7 @@
 use crate::hand::{HandId, PoseError};
 use crate::scene::{ObjectError, ObjectId};
 
-/// Errors of [`InteractionWorld`] calls.
+/// Errors of [`super::InteractionWorld`] calls.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum WorldError {
     /// A hand pose was rejected.
