@@ -142,6 +142,53 @@ fn each_thesis_equation_is_cited_on_exactly_one_function_in_friction() {
     assert!(wrong.is_empty(), "one home per equation, in src/friction:\n{}", wrong.join("\n"));
 }
 
+/// A source file's code that builds outside tests: without its comments,
+/// and cut where a `#[cfg(test)]` module begins (the crate keeps its unit
+/// tests last in each file, or in a `tests.rs` of their own).
+fn code_outside_tests(path: &Path) -> String {
+    let name = path.file_name().and_then(|n| n.to_str());
+    if name == Some("tests.rs") || path.components().any(|c| c.as_os_str() == "tests") {
+        return String::new();
+    }
+    let (text, mut code) = (read(path), String::new());
+    let mut lines = text.lines().map(str::trim).peekable();
+    while let Some(line) = lines.next() {
+        if line == "#[cfg(test)]" && lines.peek().is_some_and(|l| l.contains("mod ")) {
+            break;
+        }
+        if !line.starts_with("//") {
+            code.push_str(line);
+            code.push('\n');
+        }
+    }
+    code
+}
+
+#[test]
+fn each_equation_s_home_is_called_by_code_that_runs() {
+    // An equation written again where it runs leaves its home a reading
+    // only, free to differ: the home must be what the step calls.
+    let code: Vec<String> = rust_files(&["src"]).iter().map(|p| code_outside_tests(p)).collect();
+    let mut unused = Vec::new();
+    for (eq, homes) in equation_homes() {
+        for (file, name) in homes {
+            let calls = [format!("{name}("), format!("{name}::<")];
+            let called = code.iter().any(|text| {
+                let without_definition = text.replace(&format!("fn {name}"), "");
+                calls.iter().any(|call| without_definition.contains(call.as_str()))
+            });
+            if !called {
+                unused.push(format!("Eq. {eq}: {name} in {file}"));
+            }
+        }
+    }
+    assert!(
+        unused.is_empty(),
+        "no code outside tests calls these equations' homes:\n{}",
+        unused.join("\n")
+    );
+}
+
 #[test]
 fn the_equation_table_in_architecture_md_names_each_home() {
     let table = read(&Path::new(ROOT).join("ARCHITECTURE.md"));

@@ -229,14 +229,20 @@ const LANE_MASKS: [[f32; LANES]; 1 << LANES] = {
     masks
 };
 
+/// The four vectors of `c`, in lane order, by one transpose.
+#[inline]
+pub(crate) fn vectors(c: &Chunk) -> [Vec3A; LANES] {
+    // The fourth lane of each, z again, is never read.
+    f32x4::transpose([c[0], c[1], c[2], c[2]])
+        .map(|v| Vec3A::from_vec4(Vec4::from_array(v.to_array())))
+}
+
 /// Adds the four vectors of `c` to `sum` one after another, in lane order:
 /// the sums, and so the bits, of a loop over them.
 #[inline]
 pub(crate) fn add_in_order(sum: &mut Vec3A, c: &Chunk) {
-    // Four vectors from the three lanes, by one transpose (the fourth
-    // lane of each, z again, is never read).
-    for v in f32x4::transpose([c[0], c[1], c[2], c[2]]) {
-        *sum += Vec3A::from_vec4(Vec4::from_array(v.to_array()));
+    for v in vectors(c) {
+        *sum += v;
     }
 }
 

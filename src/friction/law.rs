@@ -2,6 +2,7 @@
 
 use super::{FrictionCoefficients, FrictionState, KineticFriction, ResolvedForce};
 use glam::Vec3;
+use std::ops::Add;
 
 /// Eq. 3.4: the spring contact force `f = γ(C − p)` on the bone.
 #[inline]
@@ -77,13 +78,14 @@ pub fn resolve(
 }
 
 /// Eq. 3.10: the total force of a hand's contacts on one object,
-/// `F = Σ (f_n + f_T)` (N): `total` plus each further contact's force on
-/// the object, so it can be summed contact by contact as forces are
-/// applied. Forces that are not finite are left out, as they are never
-/// applied.
-#[inline]
-pub fn total_force(total: Vec3, on_object: impl IntoIterator<Item = Vec3>) -> Vec3 {
-    on_object.into_iter().filter(|f| f.is_finite()).fold(total, |sum, f| sum + f)
+/// `F = Σ (f_n + f_T)` (N): `total` plus each further force on the object,
+/// added one after another in order, so that it can be summed contact by
+/// contact, and sample by sample of a contact's patch, as the forces are
+/// applied. Only forces that are applied belong in it: the step leaves out
+/// any that is not finite (its firewall) before it sums.
+#[inline(always)]
+pub fn total_force<F: Add<Output = F>>(total: F, on_object: impl IntoIterator<Item = F>) -> F {
+    on_object.into_iter().fold(total, |sum, f| sum + f)
 }
 
 #[cfg(test)]
@@ -168,15 +170,15 @@ mod tests {
     }
 
     #[test]
-    fn the_total_adds_every_finite_contact_force() {
-        let forces = [Vec3::new(0.1, 2.0, 0.0), Vec3::new(-0.3, 0.5, 0.2), Vec3::NAN];
-        assert!((total_force(Vec3::ZERO, forces) - Vec3::new(-0.2, 2.5, 0.2)).length() < 1e-6);
+    fn the_total_adds_every_contact_force_in_order() {
+        let forces =
+            [Vec3::new(0.1, 2.0, 0.0), Vec3::new(-0.3, 0.5, 0.2), Vec3::new(0.0, 0.0, -0.7)];
+        let sum = total_force(Vec3::ZERO, forces);
+        assert!((sum - Vec3::new(-0.2, 2.5, -0.5)).length() < 1e-6);
         assert_eq!(total_force(Vec3::ZERO, []), Vec3::ZERO);
-        // Contact by contact, it comes to the same.
+        // Contact by contact, it comes to the same bits: the same sums in
+        // the same order.
         let first = total_force(Vec3::ZERO, forces[..1].iter().copied());
-        assert_eq!(
-            total_force(first, forces[1..].iter().copied()),
-            total_force(Vec3::ZERO, forces)
-        );
+        assert_eq!(total_force(first, forces[1..].iter().copied()), sum);
     }
 }

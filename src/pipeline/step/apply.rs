@@ -2,6 +2,7 @@
 
 use super::Stage;
 use crate::contact::lanes;
+use crate::friction::total_force;
 use crate::pipeline::firewall;
 use crate::scene::ObjectId;
 use glam::{Vec3, Vec3A};
@@ -59,15 +60,15 @@ impl Stage<'_> {
                 // firewall passes, and of them, those pushing a dynamic
                 // body. The others add -0.0: the bits of skipping them.
                 let finite = firewall::forces(f, q) & forces.used_mask(j);
-                // Eq. 3.10 (`friction::total_force`) over the forces the
-                // firewall passed: only finite ones are summed.
+                // Eq. 3.10 over the forces the firewall passed.
                 if !alike {
-                    lanes::add_in_order(&mut total, &lanes::keep(f, finite));
+                    total = total_force(total, lanes::vectors(&lanes::keep(f, finite)));
                 }
                 let pushing = if dynamic { finite & lanes::nonzero(f) } else { 0 };
                 if pushing != 0 {
                     let torques = lanes::cross(lanes::sub(*q, origin), *f);
-                    lanes::add_in_order(&mut force, &lanes::keep(f, pushing));
+                    // The same sum, on the body: the zero samples skipped.
+                    force = total_force(force, lanes::vectors(&lanes::keep(f, pushing)));
                     lanes::add_in_order(&mut torque, &lanes::keep(&torques, pushing));
                     pushed = true;
                 }
