@@ -16,6 +16,7 @@
 //! given whole chunks is given [`Vec3Lanes::used`] with each.
 
 use glam::{Mat3, Vec3, Vec3A, Vec4};
+use std::ops::{Add, BitAnd, Mul, Sub};
 use wide::f32x4;
 
 /// Items per chunk.
@@ -164,34 +165,123 @@ pub(crate) fn splat(v: Vec3) -> Chunk {
     [f32x4::splat(v.x), f32x4::splat(v.y), f32x4::splat(v.z)]
 }
 
+/// One register of `f32` lanes, as the contact kernels compute on it:
+/// `f32x4` here, eight lanes in the AVX2 build
+/// (`patch/deviation/wide8.rs`), and a plain `f32`, one lane, the scalar
+/// reading that the kernels' tests compare with. A kernel written once on
+/// a `Lane` does the same operations in the same order on each lane,
+/// whatever the width: so the same bits.
+pub(crate) trait Lane:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>
+{
+    /// A comparison's result, lane by lane.
+    type Mask: Copy + BitAnd<Output = Self::Mask>;
+
+    /// A four-lane constant (the same value in each lane) in every lane.
+    fn widen(v: f32x4) -> Self;
+
+    /// Each lane held within `[lower, upper]`, as `f32x4::fast_clamp`: a
+    /// NaN stays NaN, and a zero within bounds of zero keeps its sign.
+    fn clamp(self, lower: Self, upper: Self) -> Self;
+
+    /// Where `self > other`.
+    fn gt(self, other: Self) -> Self::Mask;
+
+    /// Whether any lane of `mask` is set.
+    fn any(mask: Self::Mask) -> bool;
+}
+
+impl Lane for f32x4 {
+    type Mask = f32x4;
+
+    #[inline(always)]
+    fn widen(v: f32x4) -> f32x4 {
+        v
+    }
+
+    #[inline(always)]
+    fn clamp(self, lower: f32x4, upper: f32x4) -> f32x4 {
+        self.fast_clamp(lower, upper)
+    }
+
+    #[inline(always)]
+    fn gt(self, other: f32x4) -> f32x4 {
+        self.simd_gt(other)
+    }
+
+    #[inline(always)]
+    fn any(mask: f32x4) -> bool {
+        mask.any()
+    }
+}
+
+impl Lane for f32 {
+    type Mask = bool;
+
+    #[inline(always)]
+    fn widen(v: f32x4) -> f32 {
+        v.as_array()[0]
+    }
+
+    #[inline(always)]
+    fn clamp(self, lower: f32, upper: f32) -> f32 {
+        if self < lower {
+            lower
+        } else if self > upper {
+            upper
+        } else {
+            self
+        }
+    }
+
+    #[inline(always)]
+    fn gt(self, other: f32) -> bool {
+        self > other
+    }
+
+    #[inline(always)]
+    fn any(mask: bool) -> bool {
+        mask
+    }
+}
+
+/// Vectors in lanes: their x, y and z, each a [`Lane`].
+pub(crate) type Vector<W> = [W; 3];
+
 /// `a + b`, lane by lane.
-#[inline]
-pub(crate) fn add(a: Chunk, b: Chunk) -> Chunk {
+#[inline(always)]
+pub(crate) fn add<W: Lane>(a: Vector<W>, b: Vector<W>) -> Vector<W> {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
 /// `a − b`, lane by lane.
-#[inline]
-pub(crate) fn sub(a: Chunk, b: Chunk) -> Chunk {
+#[inline(always)]
+pub(crate) fn sub<W: Lane>(a: Vector<W>, b: Vector<W>) -> Vector<W> {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 /// `s·a`, lane by lane.
-#[inline]
-pub(crate) fn scale(s: f32x4, a: Chunk) -> Chunk {
+#[inline(always)]
+pub(crate) fn scale<W: Lane>(s: W, a: Vector<W>) -> Vector<W> {
     [s * a[0], s * a[1], s * a[2]]
 }
 
 /// `a·b = (a.x·b.x + a.y·b.y) + a.z·b.z`, lane by lane.
-#[inline]
-pub(crate) fn dot(a: Chunk, b: Chunk) -> f32x4 {
+#[inline(always)]
+pub(crate) fn dot<W: Lane>(a: Vector<W>, b: Vector<W>) -> W {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// `a × b`, lane by lane.
-#[inline]
-pub(crate) fn cross(a: Chunk, b: Chunk) -> Chunk {
+#[inline(always)]
+pub(crate) fn cross<W: Lane>(a: Vector<W>, b: Vector<W>) -> Vector<W> {
     [a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0], a[0] * b[1] - b[0] * a[1]]
+}
+
+/// A four-lane constant vector ([`splat`]) in every lane of `W`.
+#[inline(always)]
+pub(crate) fn widen<W: Lane>(v: &Chunk) -> Vector<W> {
+    v.map(W::widen)
 }
 
 /// Which lanes of `c` hold a vector other than zero, as a bitmask (`-0.0`
@@ -256,10 +346,10 @@ pub(crate) fn splat_mat(m: &Mat3) -> Mat3Lanes {
 }
 
 /// `m·v`, column by column as glam's `Mat3 * Vec3`: `(x·v.x + y·v.y) + z·v.z`.
-#[inline]
-pub(crate) fn mat_mul(m: &Mat3Lanes, v: Chunk) -> Chunk {
+#[inline(always)]
+pub(crate) fn mat_mul<W: Lane>(m: &Mat3Lanes, v: Vector<W>) -> Vector<W> {
     let [x, y, z] = m;
-    let row = |i: usize| x[i] * v[0] + y[i] * v[1] + z[i] * v[2];
+    let row = |i: usize| W::widen(x[i]) * v[0] + W::widen(y[i]) * v[1] + W::widen(z[i]) * v[2];
     [row(0), row(1), row(2)]
 }
 

@@ -8,9 +8,11 @@
 //!   lies on a face, or over the palm on a plate;
 //! * `roll.rs`: rolling contacts, C and p carried as the surfaces roll;
 //! * [`patch`]: spreading a contact's force over its skin patch, with its
-//!   deviation springs' kernels (`patch/deviation.rs`, and eight samples
-//!   at a time for AVX2 beneath it, `patch/deviation/wide8.rs`);
-//! * `lanes.rs`: four vectors at a time, the patch's SIMD arithmetic;
+//!   deviation springs' kernel (`patch/deviation.rs`, written once on a
+//!   lane type, and its eight-lane AVX2 type beneath it,
+//!   `patch/deviation/wide8.rs`);
+//! * `lanes.rs`: four vectors at a time, the patch's SIMD arithmetic, and
+//!   the `Lane` trait that kernels are written on (`f32x4`, or one `f32`);
 //! * [`surface`]: moving C along the surface by inverse ray casts;
 //! * [`event`]: begin/end events.
 //!
