@@ -183,3 +183,32 @@ fn the_config_page_shows_the_defaults_and_every_field() {
         }
     }
 }
+
+/// The words of README.md's set-up line, between its `setup` anchors.
+fn set_up_line() -> String {
+    let readme = read(&Path::new(ROOT).join("README.md"));
+    let (_, after) = readme.split_once("<!-- ANCHOR: setup -->").expect("a setup anchor");
+    let (block, _) = after.split_once("<!-- ANCHOR_END: setup -->").expect("its end");
+    let lines: Vec<&str> =
+        block.lines().filter(|l| !l.trim().is_empty() && !l.starts_with("```")).collect();
+    assert_eq!(lines.len(), 1, "one set-up line: {lines:?}");
+    lines[0].to_string()
+}
+
+#[test]
+fn the_set_up_line_installs_what_ci_installs_with_or_without_sudo() {
+    let line = set_up_line();
+    // As root in a plain container there is no `sudo`: the line takes it
+    // only where `command -v` finds it, and reads the package lists first.
+    assert!(
+        line.starts_with("sudo=$(command -v sudo); $sudo apt-get update && $sudo apt-get install"),
+        "{line}"
+    );
+    let (_, packages) = line.split_once("install -y ").expect("apt-get install -y");
+    let readme: BTreeSet<&str> = packages.split_whitespace().collect();
+    let ci = read(&Path::new(ROOT).join(".ci/run"));
+    let (_, list) = ci.split_once("packages=(").expect(".ci/run's packages");
+    let (list, _) = list.split_once(')').expect("the list's end");
+    let ci: BTreeSet<&str> = list.split_whitespace().collect();
+    assert_eq!(readme, ci, "README.md's set-up line and .ci/run's packages");
+}
