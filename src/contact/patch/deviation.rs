@@ -188,10 +188,15 @@ pub(super) mod tests {
     use super::*;
     use glam::{Mat3, Vec3};
 
+    /// The skin frame's rotation of [`springs`].
+    fn skin_rotation() -> Mat3 {
+        Mat3::from_euler(glam::EulerRot::XYZ, 0.31, -0.17, 0.53)
+    }
+
     /// A patch's springs, clamped or not, on a tilted normal, with a skin
     /// frame turned and turning and an object that spins.
     pub fn springs(clamped: bool) -> Springs {
-        let rot = Mat3::from_euler(glam::EulerRot::XYZ, 0.31, -0.17, 0.53);
+        let rot = skin_rotation();
         let rate = Mat3::from_cols(
             Vec3::new(0.0, 1.3, -0.4),
             Vec3::new(-1.3, 0.0, 0.9),
@@ -222,7 +227,7 @@ pub(super) mod tests {
             let a = i as f32 * 0.83;
             let skin = Vec3::new(a.cos(), 0.3 * a.sin(), a.sin()) * 0.004;
             let moved = Vec3::new((2.1 * a).sin(), (1.3 * a).cos(), (0.7 * a).sin()) * 9e-4;
-            (c + Mat3::from_euler(glam::EulerRot::XYZ, 0.31, -0.17, 0.53) * skin + moved, skin)
+            (c + skin_rotation() * skin + moved, skin)
         }))
     }
 
