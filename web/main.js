@@ -4,8 +4,11 @@
 // desk), or WebXR hand tracking (Enter VR / Enter AR).
 //
 // URL parameters: `run=demo|desk|recording|<scenario name>` picks the run; `fast` steps 250
-// steps a frame whatever the clock (the tests'); `trace` records the run's trace
-// (trace.js), which the browser test compares with the native library's.
+// steps a frame whatever the clock (the tests'); `granted` steps only the steps granted by
+// `app.grant(n)`, each grant run whole at the next frame, after the hands are posed (and
+// the hands posed only then), so a test that moves a hand and then grants steps gets the
+// same run in every browser and at any frame rate (the immersive test's); `trace` records
+// the run's trace (trace.js), which the browser test compares with the native library's.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/controls/OrbitControls.js';
 import init, * as wasm from './pkg/coulomb_hands_web.js';
@@ -63,8 +66,16 @@ const app = {
   // given (for the tests and the benchmark).
   joints: {},
   jointArrays: {},
+  // Steps granted and not yet run (with `granted`).
+  granted: 0,
 };
 window.app = app;
+// With `granted`: `n` more steps, run at the next frame with the hands as posed then.
+app.grant = (n) => {
+  if (!params.has('granted')) throw new Error('app.grant needs the page opened with ?granted');
+  if (!Number.isInteger(n) || n < 0) throw new Error(`app.grant: ${n} is not a step count`);
+  app.granted += n;
+};
 
 try {
   await init();
@@ -277,11 +288,18 @@ function frame(time, xrFrame) {
   last = time;
   if (!world) return;
   try {
-    if (app.xr && xrFrame) app.xr.update(xrFrame, world);
-    else if (mouse) mouse.update(elapsed / 1000);
+    // Granted, the hands are posed only at the frames that step, so a run depends on the
+    // poses a test set before its grants, not on how many frames the browser drew between.
+    const posing = !params.has('granted') || app.granted > 0;
+    if (app.xr && xrFrame) {
+      if (posing) app.xr.update(xrFrame, world);
+    } else if (mouse) mouse.update(elapsed / 1000);
     let steps = 0;
     if (!app.paused && !app.done) {
-      if (params.has('fast')) {
+      if (params.has('granted')) {
+        steps = app.granted;
+        app.granted = 0;
+      } else if (params.has('fast')) {
         steps = FAST_STEPS_PER_FRAME;
       } else {
         app.accumulated += elapsed;

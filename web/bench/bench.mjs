@@ -50,7 +50,7 @@ try {
   await enterVr(page);
   const right = await aimPinch(page, 'right', 0, 0.04, [0.15, 1.0, -0.3]);
   await pinch(page, 'right', right);
-  const left = await aimPinch(page, 'left', 1, 0.06, [0.0, 1.0, -0.3]);
+  const left = await aimPinch(page, 'left', 1, 0.06, [0.0, 1.0, -0.3], 0.004);
   await pinch(page, 'left', left);
   await simulate(page, 0.3);
   const held = [await object(page, 0), await object(page, 1)].map((o) => o.pressing);
