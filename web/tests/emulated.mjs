@@ -61,7 +61,7 @@ export async function simulate(page, seconds) {
  * iwer's pinch brings the index down onto the thumb from above, its bones sloping to the tip.
  * Pinched at the middle of the desk's 4 cm cube, they lie over its top edge, and the thumb and
  * index press adjacent faces, a grip that cannot lift; hence the default, 1 cm below the
- * middle. Measured on the immersive test's lift, in 1 mm steps of `height`: from 14 to 7 mm
+ * middle. Measured on the immersive test's lift, in 1–2 mm steps of `height`: from 14 to 7 mm
  * below the middle every pinch lifts the cube; from 6 mm below to 6 mm above, 6 of 10 land on
  * the top edge and drop it. */
 export async function aimPinch(page, side, id, width, start, height = -0.01) {
