@@ -18,6 +18,8 @@ import { XrHands, xrSupported, startXr } from './xr.js';
 import { traceRow, TRACE_EVERY } from './trace.js';
 
 const params = new URLSearchParams(location.search);
+// Stepping only what a test grants (`granted`).
+const GRANTING = params.has('granted');
 // At most this many steps in one frame (100 ms of physics): a stalled tab catches up slowly
 // rather than freezing on a long backlog.
 const MAX_STEPS_PER_FRAME = 100;
@@ -66,13 +68,15 @@ const app = {
   // given (for the tests and the benchmark).
   joints: {},
   jointArrays: {},
-  // Steps granted and not yet run (with `granted`).
+  // Whether the page steps only what is granted (`granted`), and the steps granted and not
+  // yet run.
+  granting: GRANTING,
   granted: 0,
 };
 window.app = app;
 // With `granted`: `n` more steps, run at the next frame with the hands as posed then.
 app.grant = (n) => {
-  if (!params.has('granted')) throw new Error('app.grant needs the page opened with ?granted');
+  if (!GRANTING) throw new Error('app.grant needs the page opened with ?granted');
   if (!Number.isInteger(n) || n < 0) throw new Error(`app.grant: ${n} is not a step count`);
   app.granted += n;
 };
@@ -290,13 +294,13 @@ function frame(time, xrFrame) {
   try {
     // Granted, the hands are posed only at the frames that step, so a run depends on the
     // poses a test set before its grants, not on how many frames the browser drew between.
-    const posing = !params.has('granted') || app.granted > 0;
+    const posing = !GRANTING || app.granted > 0;
     if (app.xr && xrFrame) {
       if (posing) app.xr.update(xrFrame, world);
     } else if (mouse) mouse.update(elapsed / 1000);
     let steps = 0;
     if (!app.paused && !app.done) {
-      if (params.has('granted')) {
+      if (GRANTING) {
         steps = app.granted;
         app.granted = 0;
       } else if (params.has('fast')) {

@@ -42,7 +42,7 @@ export async function simulate(page, seconds) {
   const target = await page.evaluate((seconds) => {
     const app = window.app;
     const world = app.world;
-    if (!new URLSearchParams(location.search).has('granted')) return { time: world.time + seconds };
+    if (!app.granting) return { time: world.time + seconds };
     const steps = Math.round(seconds / world.dt);
     app.grant(steps);
     return { steps: world.steps + steps };
