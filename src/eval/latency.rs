@@ -112,6 +112,8 @@ pub struct LatencyOptions {
     pub noise_unit: NoiseUnit,
     /// The recordings to take the noise from (none: the bundled ones).
     pub noise_from: Vec<PathBuf>,
+    /// Or white noise, drawn for a tracker at this frame rate (Hz).
+    pub noise_white: Option<f32>,
     /// Noise streams averaged per strength.
     pub streams: usize,
     /// The world's settings, whose tracking filter is measured.
@@ -124,6 +126,7 @@ impl Default for LatencyOptions {
             noise: Self::NOISE_MM.to_vec(),
             noise_unit: NoiseUnit::RmsMm,
             noise_from: Vec::new(),
+            noise_white: None,
             streams: Self::STREAMS,
             config: InteractionConfig::default(),
         }
@@ -144,7 +147,7 @@ pub fn latency(options: &LatencyOptions) -> Result<LatencyStudy, RunError> {
     }
     check_some("noise", options.noise.len())?;
     check_some("streams", options.streams)?;
-    let noise = TrackingNoise::load(&options.noise_from)?;
+    let noise = TrackingNoise::choose(&options.noise_from, options.noise_white)?;
     let mut rows = Vec::new();
     for &level in &options.noise {
         let scale = options.noise_unit.scale(&noise, level)?;

@@ -107,6 +107,9 @@ pub struct Conditions {
     pub perception: f32,
     /// The recordings to take the noise from (none: the bundled ones).
     pub noise_from: Vec<PathBuf>,
+    /// Or white noise, drawn for a tracker at this frame rate (Hz)
+    /// ([`TrackingNoise::white`]), instead of recordings'.
+    pub noise_white: Option<f32>,
     /// What the noise strengths count.
     pub noise_unit: NoiseUnit,
     /// Threads to run trials on (the outcomes do not depend on it).
@@ -117,7 +120,8 @@ impl Default for Conditions {
     fn default() -> Self {
         let threads = trial::default_threads();
         let (noise_from, noise_unit) = (Vec::new(), NoiseUnit::Times);
-        Conditions { perception: Self::PERCEPTION, noise_from, noise_unit, threads }
+        let perception = Self::PERCEPTION;
+        Conditions { perception, noise_from, noise_white: None, noise_unit, threads }
     }
 }
 
@@ -128,7 +132,7 @@ impl Conditions {
     /// Checks the glance scale and loads the tracking noise.
     pub(crate) fn noise(&self) -> Result<TrackingNoise, RunError> {
         check_scale("perception", self.perception)?;
-        TrackingNoise::load(&self.noise_from)
+        TrackingNoise::choose(&self.noise_from, self.noise_white)
     }
 
     /// The scale on `noise`'s residuals of the strength `level`, in this

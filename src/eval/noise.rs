@@ -13,6 +13,12 @@
 //! hand motion lies below it (Brooks 1990, "Telerobotic response
 //! requirements": most of its energy under 5 Hz), tracker jitter above.
 //! What a recording moves slower than that is the hand, not noise.
+//!
+//! Or the noise is white ([`TrackingNoise::white`]): every joint off by a
+//! fresh Gaussian error each frame, the jitter of a tracker that fits each
+//! frame anew (a webcam's landmarks), where a Leap's residuals are mostly
+//! small with rare glitches of centimetres. The two load a grip
+//! differently, and a filter must hold under both.
 
 use crate::file_error::FileError;
 use crate::hand::HandPose;
@@ -36,6 +42,18 @@ pub const JITTERLESS: f32 = 1.0e-6;
 /// Joints per hand: the palm's centre, then four per digit, thumb first,
 /// from the base of the proximal bone to the tip.
 pub const JOINTS: usize = 21;
+
+/// White noise: its rms per joint and axis at scale 1 (m).
+const WHITE_RMS: f32 = 0.001;
+/// White noise: the lever (m) over which a tracker reads the palm's turn
+/// from its joints, so the turn's error per axis is the joints' over it.
+const WHITE_LEVER: f32 = 0.1;
+/// White noise: the residual tracks drawn, and their length (s). Longer
+/// than a trial, and looped like a recording's.
+const WHITE_TRACKS: usize = 4;
+const WHITE_SECONDS: f64 = 30.0;
+/// White noise: the tracker frame rates it can be drawn at (Hz).
+pub const WHITE_RATES: std::ops::RangeInclusive<f32> = 10.0..=1000.0;
 
 /// The bundled Leap Motion recordings (`data/leap`), built in, so the
 /// study needs no files.
@@ -171,6 +189,21 @@ impl TrackingNoise {
         TrackingNoise::from_recordings(&recordings)
     }
 
+    /// The noise a study asks for: white at `white_hz` frames a second
+    /// ([`Self::white`]), or else that of the recordings at `paths` (the
+    /// bundled ones if there are none). An error if it asks for both.
+    pub fn choose(paths: &[impl AsRef<Path>], white_hz: Option<f32>) -> Result<Self, RunError> {
+        match white_hz {
+            None => TrackingNoise::load(paths),
+            Some(_) if !paths.is_empty() => Err(RunError::Study {
+                field: "noise-white",
+                reason: "white noise is drawn, not taken from recordings: give one or the other"
+                    .into(),
+            }),
+            Some(rate) => TrackingNoise::white(rate),
+        }
+    }
+
     /// The noise of `recordings`: every hand tracked for at least
     /// [`MIN_TRACK`] gives a residual track. An error names a recording
     /// none of whose hands does, or the first bad frame.
@@ -209,6 +242,49 @@ impl TrackingNoise {
         noise.dropout_rate = noise.dropout_lengths.len() as f64 / tracked.max(1e-9);
         noise.rms = rms(&noise.tracks);
         Ok(noise)
+    }
+
+    /// White tracking noise: a tracker at `rate_hz` frames a second whose
+    /// every joint is off by a fresh Gaussian error each frame, 1 mm rms
+    /// per axis at scale 1, independent joint to joint and frame to frame;
+    /// the palm turned by the joints' error over a 10 cm lever; no
+    /// dropouts. The same draw every time. An error names the rate if it is
+    /// outside [`WHITE_RATES`].
+    pub fn white(rate_hz: f32) -> Result<TrackingNoise, RunError> {
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, StandardNormal};
+        if !WHITE_RATES.contains(&rate_hz) {
+            let (low, high) = (WHITE_RATES.start(), WHITE_RATES.end());
+            let reason = format!("a tracker's frame rate in {low}–{high} Hz, got {rate_hz}");
+            return Err(RunError::Study { field: "noise-white", reason });
+        }
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x00c0_ffee);
+        let mut gauss = |rms: f32| -> Vec3 {
+            let mut one =
+                || -> f32 { rms * Distribution::<f32>::sample(&StandardNormal, &mut rng) };
+            Vec3::new(one(), one(), one())
+        };
+        let frames = (WHITE_SECONDS * f64::from(rate_hz)).round() as usize;
+        let times: Vec<f64> = (0..frames).map(|k| k as f64 / f64::from(rate_hz)).collect();
+        let tracks = (0..WHITE_TRACKS)
+            .map(|_| ResidualTrack {
+                times: times.clone(),
+                residuals: (0..frames)
+                    .map(|_| Residual {
+                        joints: std::array::from_fn(|_| gauss(WHITE_RMS)),
+                        turn: gauss(WHITE_RMS / WHITE_LEVER),
+                    })
+                    .collect(),
+            })
+            .collect::<Vec<_>>();
+        let rms = rms(&tracks);
+        Ok(TrackingNoise {
+            tracks,
+            dropout_rate: 0.0,
+            dropout_lengths: Vec::new(),
+            sources: vec![format!("white jitter at {rate_hz} Hz")],
+            rms,
+        })
     }
 
     /// These residuals' rms per joint and axis when scaled by `scale` (mm).

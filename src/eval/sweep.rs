@@ -62,7 +62,7 @@ fn summary(noise: &TrackingNoise) -> NoiseSummary {
         sources: noise.sources.clone(),
         rms_mm: noise.rms_mm(1.0),
         dropouts_per_s: noise.dropout_rate,
-        dropout_ms: stats::describe(&lengths).0,
+        dropout_ms: if lengths.is_empty() { 0.0 } else { stats::describe(&lengths).0 },
     }
 }
 

@@ -60,8 +60,18 @@ pub struct TrackingFilter {
 impl Default for TrackingFilter {
     fn default() -> Self {
         TrackingFilter {
-            gross: OneEuro { min_cutoff: 1.0, beta: 0.025, derivative_cutoff: 1.0 },
-            shape: OneEuro { min_cutoff: 1.0, beta: 0.0025, derivative_cutoff: 1.0 },
+            gross: OneEuro {
+                min_cutoff: 1.0,
+                beta: 0.025,
+                derivative_cutoff: 1.0,
+                least_cutoff: 0.0,
+            },
+            shape: OneEuro {
+                min_cutoff: 1.0,
+                beta: 0.0025,
+                derivative_cutoff: 1.0,
+                least_cutoff: 2.0,
+            },
             jitter_window: 2.0,
         }
     }
@@ -78,11 +88,13 @@ impl TrackingFilter {
             "tracking.gross.min_cutoff",
             "tracking.gross.beta",
             "tracking.gross.derivative_cutoff",
+            "tracking.gross.least_cutoff",
         ])?;
         self.shape.validate([
             "tracking.shape.min_cutoff",
             "tracking.shape.beta",
             "tracking.shape.derivative_cutoff",
+            "tracking.shape.least_cutoff",
         ])?;
         let w = self.jitter_window;
         if !(w.is_finite() && w > 0.0 && w <= MAX_JITTER_WINDOW) {

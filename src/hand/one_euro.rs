@@ -29,15 +29,20 @@ pub struct OneEuro {
     /// The cutoff of the speed estimate (Hz): how long a motion must last
     /// before the filter believes it.
     pub derivative_cutoff: f32,
+    /// The lowest cutoff of a still point (Hz), whatever the jitter: a
+    /// filter slower than the hand's own grasp makes a grip that closes
+    /// after the hand has lifted ([`OneEuro::step`]). 0: none.
+    #[serde(default)]
+    pub least_cutoff: f32,
 }
 
 impl OneEuro {
-    /// Checks that every field is finite, the cutoffs positive and `beta`
-    /// not negative; the error names the field by `names`, the names of
-    /// `min_cutoff`, `beta` and `derivative_cutoff` where the filter is
-    /// set.
-    pub fn validate(&self, names: [&'static str; 3]) -> Result<(), (&'static str, String)> {
-        let [min_cutoff, beta, derivative_cutoff] = names;
+    /// Checks that every field is finite, the cutoffs positive (the least
+    /// cutoff ≥ 0) and `beta` not negative; the error names the field by
+    /// `names`, the names of `min_cutoff`, `beta`, `derivative_cutoff` and
+    /// `least_cutoff` where the filter is set.
+    pub fn validate(&self, names: [&'static str; 4]) -> Result<(), (&'static str, String)> {
+        let [min_cutoff, beta, derivative_cutoff, least_cutoff] = names;
         for (field, v) in
             [(min_cutoff, self.min_cutoff), (derivative_cutoff, self.derivative_cutoff)]
         {
@@ -45,8 +50,10 @@ impl OneEuro {
                 return Err((field, format!("must be a positive number of Hz, got {v}")));
             }
         }
-        if !(self.beta.is_finite() && self.beta >= 0.0) {
-            return Err((beta, format!("must be finite and ≥ 0, got {}", self.beta)));
+        for (field, v) in [(beta, self.beta), (least_cutoff, self.least_cutoff)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err((field, format!("must be finite and ≥ 0, got {v}")));
+            }
         }
         Ok(())
     }
@@ -67,14 +74,25 @@ pub fn smoothing(cutoff: f32, dt: f32) -> f32 {
 impl OneEuro {
     /// This filter for one step of `dt` (s) under a tracker of jitter
     /// `jitter` (m): what every point of a hand shares that step.
+    ///
+    /// A still point's cutoff, `min_cutoff·1 mm/σ̂`, falls as the jitter
+    /// grows, but never below [`OneEuro::least_cutoff`]: under a tracker
+    /// whose every frame is 2 mm off (white jitter, not the rare glitches
+    /// of a Leap's), it would reach 0.7 Hz, and the speed term, counted in
+    /// jitter widths, would add almost nothing to a closing grip. The
+    /// grip's pads would then close 130 ms behind the tracked hand, after
+    /// the hand had lifted. A reach-to-grasp closes its aperture over its
+    /// last 200–300 ms (Jeannerod 1984); a cutoff of 2 Hz, a time constant
+    /// of 80 ms, keeps the lag within a third of that.
     #[inline]
     pub fn step(&self, jitter: f32, dt: f32) -> EuroStep {
         // 2π·dt per jitter width: the cutoff's terms, as smoothing factors.
         let per_width = std::f32::consts::TAU * dt / jitter;
+        let least = std::f32::consts::TAU * dt * self.least_cutoff;
         EuroStep {
             dt,
             derivative: smoothing(self.derivative_cutoff, dt),
-            still: per_width * (self.min_cutoff * JITTER_UNIT),
+            still: (per_width * (self.min_cutoff * JITTER_UNIT)).max(least),
             per_speed: per_width * self.beta,
             exact: jitter <= 0.0,
         }
@@ -233,7 +251,8 @@ impl EuroTurn {
 mod tests {
     use super::*;
 
-    const FILTER: OneEuro = OneEuro { min_cutoff: 1.0, beta: 0.01, derivative_cutoff: 1.0 };
+    const FILTER: OneEuro =
+        OneEuro { min_cutoff: 1.0, beta: 0.01, derivative_cutoff: 1.0, least_cutoff: 0.0 };
 
     #[test]
     fn a_still_point_is_exactly_where_the_tracker_says() {
@@ -258,6 +277,22 @@ mod tests {
         let lag = noisy.advance(to, &FILTER.step(0.002, dt));
         let moved = (to + lag).z / to.z;
         assert!(moved > 0.0035 && moved < 0.0042, "{moved}");
+    }
+
+    #[test]
+    fn under_large_jitter_a_still_point_is_smoothed_no_slower_than_the_least_cutoff() {
+        // Under 2.6 mm of jitter the still cutoff would be 0.38 Hz; the
+        // least, 1.7 Hz, holds. Under 0.2 mm it is 5 Hz, above the least.
+        let floored = OneEuro { least_cutoff: 1.7, ..FILTER };
+        let dt = 0.001;
+        let cutoff = |f: &OneEuro, jitter: f32| {
+            let alpha = f.step(jitter, dt).alpha(0.0);
+            alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
+        };
+        assert!((cutoff(&FILTER, 0.0026) - 0.385).abs() < 0.001, "{}", cutoff(&FILTER, 0.0026));
+        assert!((cutoff(&floored, 0.0026) - 1.7).abs() < 1e-3, "{}", cutoff(&floored, 0.0026));
+        assert!((cutoff(&floored, 0.0002) - 5.0).abs() < 1e-3, "{}", cutoff(&floored, 0.0002));
+        assert_eq!(floored.step(0.0, dt).alpha(0.0), 1.0);
     }
 
     #[test]
@@ -301,13 +336,17 @@ mod tests {
 
     #[test]
     fn settings_out_of_range_name_their_field() {
-        const NAMES: [&str; 3] = ["min_cutoff", "beta", "derivative_cutoff"];
+        const NAMES: [&str; 4] = ["min_cutoff", "beta", "derivative_cutoff", "least_cutoff"];
         let bad = OneEuro { beta: -1.0, ..FILTER };
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "beta");
         let bad = OneEuro { min_cutoff: f32::NAN, ..FILTER };
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "min_cutoff");
         let bad = OneEuro { derivative_cutoff: 0.0, ..FILTER };
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "derivative_cutoff");
+        let bad = OneEuro { least_cutoff: -2.0, ..FILTER };
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "least_cutoff");
+        let bad = OneEuro { least_cutoff: f32::INFINITY, ..FILTER };
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "least_cutoff");
         assert!(FILTER.validate(NAMES).is_ok());
     }
 }

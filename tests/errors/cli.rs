@@ -355,6 +355,13 @@ fn a_study_names_the_noise_recording_it_cannot_use() {
     names(e, &["'--noise-mm <MM>' cannot be used with '--noise <SCALE>'"]);
     let e = usage_error(&["eval", "latency", "--noise-mm", "nan"]);
     names(e, &["--noise-mm", "got nan"]);
+    // White noise is drawn at a tracker's frame rate, and not from recordings.
+    let e = cli_error(&["eval", "latency", "--noise-white", "4"]);
+    names(e, &["study: noise-white: ", "frame rate in 10–1000 Hz, got 4"]);
+    let e = cli_error(&["eval", "sweep", "--noise-white", "nan"]);
+    names(e, &["study: noise-white: ", "got NaN"]);
+    let e = usage_error(&["eval", "accuracy", "--noise-white", "60", "--noise-from", &still]);
+    names(e, &["'--noise-white <HZ>' cannot be used with '--noise-from <FILE,...>'"]);
     let e = usage_error(&["eval", "accuracy", "--strategy", "throw"]);
     names(e, &["unknown strategy \"throw\": expected lift or slide"]);
 }
@@ -377,4 +384,13 @@ fn the_library_refuses_study_options_out_of_range_naming_them() {
     names(latency(&bad).unwrap_err(), &["study: streams: ", "at least one"]);
     let bad = LatencyOptions { noise: vec![-1.0], ..LatencyOptions::default() };
     names(latency(&bad).unwrap_err(), &["study: noise-mm: ", "got -1"]);
+    let both = LatencyOptions {
+        noise_white: Some(60.0),
+        noise_from: vec!["data/leap/grab.json.lz".into()],
+        ..LatencyOptions::default()
+    };
+    names(latency(&both).unwrap_err(), &["study: noise-white: ", "give one or the other"]);
+    let mut fast = AccuracyOptions::default();
+    fast.conditions.noise_white = Some(f32::INFINITY);
+    names(accuracy(&fast, &mut |_, _| {}).unwrap_err(), &["study: noise-white: ", "got inf"]);
 }

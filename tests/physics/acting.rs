@@ -58,7 +58,12 @@ struct Hold {
 /// One run under `config`, the tracked hand shaken by the bundled
 /// recordings' residuals scaled to `rms_mm`, drawn from `seed`.
 fn hold(config: InteractionConfig, rms_mm: f32, seed: u64) -> Hold {
-    let noise = TrackingNoise::bundled().unwrap();
+    hold_under(&TrackingNoise::bundled().unwrap(), config, rms_mm, seed)
+}
+
+/// One run under `config`, the tracked hand shaken by `noise` scaled to
+/// `rms_mm`, drawn from `seed`.
+fn hold_under(noise: &TrackingNoise, config: InteractionConfig, rms_mm: f32, seed: u64) -> Hold {
     let scale = noise.scale_for_rms_mm(rms_mm).unwrap();
     let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
     let stream = noise.stream(scale, &mut rng);
@@ -111,6 +116,32 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
     // at 2 mm); through the filter, the rare drop follows a glitch.
     assert!(through_filter <= 2, "{through_filter} of {STREAMS} dropped through the filter");
     assert!(as_tracked >= 6, "the raw tracked hand dropped only {as_tracked} of {STREAMS}");
+}
+
+#[test]
+fn under_white_jitter_the_grip_holds_and_lets_go_where_a_filter_without_a_least_cutoff_lags() {
+    // A tracker at 75 frames a second whose every joint is off by a fresh
+    // 2.6 mm each frame: the jitter measured is about 2 mm, where the still
+    // cutoff alone would be 0.5 Hz, a grip that follows 0.3 s behind.
+    let noise = TrackingNoise::white(75.0).unwrap();
+    let mut unfloored = InteractionConfig::default();
+    unfloored.tracking.as_mut().unwrap().shape.least_cutoff = 0.0;
+    let clean = hold(filtered(), 0.0, 0).let_go.unwrap();
+    // The least cutoff's time constant bounds how long a still grip lags a
+    // hand that begins to open: 80 ms at 2 Hz.
+    let least = filtered().tracking.unwrap().shape.least_cutoff;
+    let bound = 1.0 / (std::f32::consts::TAU * least);
+    let mut late_unfloored = 0;
+    for seed in 0..8 {
+        let run = hold_under(&noise, filtered(), 2.6, 40 + seed);
+        let without = hold_under(&noise, unfloored, 2.6, 40 + seed);
+        let late = |h: &Hold| h.let_go.map_or(f32::INFINITY, |t| t - clean);
+        assert!(run.sagged < 0.003, "seed {seed}: sagged in the grip: {run:?}");
+        assert!(late(&run) < bound, "seed {seed}: let go {:.3} s late: {run:?}", late(&run));
+        assert!(run.off < 0.01, "seed {seed}: set down off its place: {run:?}");
+        late_unfloored += usize::from(late(&without) > bound);
+    }
+    assert!(late_unfloored >= 6, "without the least cutoff only {late_unfloored} of 8 let go late");
 }
 
 #[test]

@@ -38,6 +38,25 @@ fn every_method_completes_the_reduced_accuracy_study_with_errors_on_the_board() 
 }
 
 #[test]
+fn under_white_tracker_jitter_the_users_lift_and_place_the_cube_without_dropping_it() {
+    // A tracker at 90 frames a second, every joint off by a fresh 2.4 mm
+    // each frame: the grip closes in time for the users' lifts.
+    let mut options = AccuracyOptions { users: 2, trials: 4, seed: 23, ..Default::default() };
+    options.methods = vec![Method::Coulomb];
+    options.strategies = vec![Strategy::Lift];
+    options.noise = 2.4;
+    options.conditions = Conditions {
+        noise_white: Some(90.0),
+        noise_unit: coulomb_hands::eval::NoiseUnit::RmsMm,
+        ..Conditions::default()
+    };
+    let report = accuracy(&options, &mut |_, _| {}).expect("the study runs");
+    let m = &report.methods[0];
+    assert_eq!((m.failed, m.drops), (0, 0), "{m:?}");
+    assert!(m.mean_mm < 4.0, "placed {:.1} mm off on average", m.mean_mm);
+}
+
+#[test]
 fn trials_run_in_turn_on_one_thread_end_as_they_do_on_several() {
     // One thread (and wasm32, which has none) runs the trials on the caller's.
     let study = |threads| {

@@ -117,6 +117,7 @@ fn run_scenario<'py>(
     noise_mm = None,
     perception = Conditions::PERCEPTION,
     noise_from = None,
+    noise_white = None,
     threads = None,
 ))]
 #[allow(clippy::too_many_arguments)]
@@ -131,6 +132,7 @@ fn eval_accuracy<'py>(
     noise_mm: Option<f32>,
     perception: f32,
     noise_from: Option<Vec<PathBuf>>,
+    noise_white: Option<f32>,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let defaults = AccuracyOptions::default();
@@ -149,6 +151,7 @@ fn eval_accuracy<'py>(
     let conditions = Conditions {
         perception,
         noise_from: noise_from.unwrap_or_default(),
+        noise_white,
         noise_unit,
         threads: threads.unwrap_or(defaults.conditions.threads),
     };

@@ -88,16 +88,21 @@ def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
     assert data["all_finite"]
 
 
-def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
-    args = ["--users", "1", "--trials", "2", "--seed", "17", "--method", "coulomb,thesis"]
-    args += ["--strategy", "slide", "--noise-mm", "0.45"]
-    out = subprocess.run(
+def accuracy_json(args: list[str]) -> str:
+    """What `coulomb-hands eval accuracy --json ARGS` prints."""
+    return subprocess.run(
         [str(cli()), "eval", "accuracy", "--json", *args],
         cwd=REPO,
         capture_output=True,
         text=True,
         check=True,
     ).stdout
+
+
+def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
+    args = ["--users", "1", "--trials", "2", "--seed", "17", "--method", "coulomb,thesis"]
+    args += ["--strategy", "slide", "--noise-mm", "0.45"]
+    out = accuracy_json(args)
     data = ch.eval_accuracy(
         users=1,
         trials=2,
@@ -109,6 +114,24 @@ def test_the_accuracy_study_from_python_is_the_cli_json_byte_for_byte() -> None:
     assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
     assert [m["method"] for m in data["methods"]] == ["coulomb", "thesis"]
     assert abs(data["noise_rms_mm"] - 0.45) < 1e-6
+
+
+def test_the_accuracy_study_takes_white_noise_as_the_cli_does() -> None:
+    args = ["--users", "1", "--trials", "1", "--seed", "4", "--method", "coulomb"]
+    args += ["--strategy", "lift", "--noise-mm", "1.7", "--noise-white", "45"]
+    out = accuracy_json(args)
+    data = ch.eval_accuracy(
+        users=1,
+        trials=1,
+        seed=4,
+        methods=["coulomb"],
+        strategies=["lift"],
+        noise_mm=1.7,
+        noise_white=45.0,
+    )
+    assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
+    with pytest.raises(ch.StudyError, match="noise-white: a tracker's frame rate in 10–1000 Hz"):
+        ch.eval_accuracy(users=1, trials=1, noise_white=2000.0)
 
 
 def test_a_scenario_runs_and_passes_its_checks() -> None:

@@ -31,6 +31,10 @@ pub struct LatencyArgs {
     /// bundled Leap Motion recordings).
     #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
     noise_from: Vec<PathBuf>,
+    /// Draw white tracking noise instead, for a tracker at this frame rate: every joint off
+    /// by a fresh Gaussian error each frame (1 mm rms per axis at --noise 1).
+    #[arg(long, value_name = "HZ", conflicts_with = "noise_from")]
+    noise_white: Option<f32>,
     /// Noise streams averaged per strength.
     #[arg(long, default_value_t = LatencyOptions::STREAMS, value_parser = count())]
     streams: usize,
@@ -49,6 +53,7 @@ impl LatencyArgs {
             noise,
             noise_unit,
             noise_from: self.noise_from,
+            noise_white: self.noise_white,
             streams: self.streams,
             ..LatencyOptions::default()
         };

@@ -24,6 +24,10 @@ pub struct ConditionArgs {
     /// bundled Leap Motion recordings).
     #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
     noise_from: Vec<PathBuf>,
+    /// Draw white tracking noise instead, for a tracker at this frame rate: every joint off
+    /// by a fresh Gaussian error each frame (1 mm rms per axis at --noise 1).
+    #[arg(long, value_name = "HZ", conflicts_with = "noise_from")]
+    noise_white: Option<f32>,
     /// Threads to run trials on (the results do not depend on it) [default: the cores].
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
     threads: Option<u16>,
@@ -34,8 +38,9 @@ impl ConditionArgs {
     /// in `noise_unit`s.
     pub fn conditions(self, noise_unit: NoiseUnit) -> Conditions {
         let threads = self.threads.map_or_else(trial::default_threads, usize::from);
-        let (perception, noise_from) = (self.perception, self.noise_from);
-        Conditions { perception, noise_from, noise_unit, threads }
+        let (perception, noise_from, noise_white) =
+            (self.perception, self.noise_from, self.noise_white);
+        Conditions { perception, noise_from, noise_white, noise_unit, threads }
     }
 }
 

@@ -75,11 +75,10 @@ fn print_sweep(s: &SweepStudy) {
         s.perception
     );
     println!(
-        "noise x1: {} (rms {:.2} mm per joint and axis; {:.2} dropouts/s of {:.0} ms)",
+        "noise x1: {} (rms {:.2} mm per joint and axis; {})",
         s.noise.sources.join(", "),
         s.noise.rms_mm,
-        s.noise.dropouts_per_s,
-        s.noise.dropout_ms
+        s.noise.dropouts()
     );
     println!(
         "{:<10} {:<6} {:>6} {:>6} {:>20} {:>6} {:>20} {:>18} {:>18}",

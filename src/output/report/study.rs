@@ -31,17 +31,27 @@ impl Estimate {
 /// Where the noise came from and how strong it is at scale 1.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct NoiseSummary {
-    /// The recordings.
+    /// The recordings, or the white noise drawn.
     pub sources: Vec<String>,
     /// The residuals' rms per joint and axis (mm).
     pub rms_mm: f64,
     /// Dropouts per second of tracked hand.
     pub dropouts_per_s: f64,
-    /// Their mean length (ms).
+    /// Their mean length (ms; 0 without dropouts).
     pub dropout_ms: f64,
 }
 
 impl NoiseSummary {
+    /// Its dropouts in words: "0.70 dropouts a second, 18 ms each", or "no
+    /// dropouts".
+    pub fn dropouts(&self) -> String {
+        if self.dropouts_per_s > 0.0 {
+            format!("{:.2} dropouts a second, {:.0} ms each", self.dropouts_per_s, self.dropout_ms)
+        } else {
+            "no dropouts".into()
+        }
+    }
+
     /// The residuals' rms per joint and axis at `scale` times their own
     /// (mm): what a row of that strength shook the hand by.
     pub fn rms_mm_at(&self, scale: f32) -> f64 {

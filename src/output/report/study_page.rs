@@ -42,17 +42,15 @@ pub(super) fn sweep(p: &mut String, s: &SweepStudy) {
     let _ = writeln!(
         p,
         "<p>Seeds {}, each {} synthetic users × {} trials, per method, strategy and noise \
-         strength. Noise ×1 is the bundled recordings' own: {} (rms {:.2} mm per joint and \
-         axis after a 5 Hz smoothing; {:.2} dropouts a second, {:.0} ms each). Glance errors \
-         ×{} those of the thesis's headset. Intervals are 95 %: Student's t for means, Wilson \
-         for the share of failed trials, trials taken as independent.</p>",
+         strength. Noise ×1 is that of {}: rms {:.2} mm per joint and axis, {}. Glance \
+         errors ×{} those of the thesis's headset. Intervals are 95 %: Student's t for means, \
+         Wilson for the share of failed trials, trials taken as independent.</p>",
         seeds.join(", "),
         s.users,
         s.trials,
         escape(&s.noise.sources.join(", ")),
         s.noise.rms_mm,
-        s.noise.dropouts_per_s,
-        s.noise.dropout_ms,
+        s.noise.dropouts(),
         s.perception
     );
     let strategies = distinct(s.rows.iter().map(|r| r.strategy.as_str()));

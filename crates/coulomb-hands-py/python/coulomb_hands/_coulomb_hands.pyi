@@ -301,11 +301,13 @@ def eval_accuracy(
     noise_mm: Optional[float] = None,
     perception: float = 1.0,
     noise_from: Optional[Sequence[Path]] = None,
+    noise_white: Optional[float] = None,
     threads: Optional[int] = None,
 ) -> dict[str, Any]:
     """The positioning-accuracy study (thesis 5.2); returns `coulomb-hands eval
     accuracy --json`'s data. `noise` scales the recordings' tracking noise;
-    `noise_mm`, instead, sets its rms per joint and axis (mm)."""
+    `noise_mm`, instead, sets its rms per joint and axis (mm). `noise_white`, a
+    tracker's frame rate (Hz), draws white noise instead of the recordings'."""
 
 def bench(
     *,
