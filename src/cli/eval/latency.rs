@@ -1,13 +1,12 @@
 //! `eval latency`: how far the hand that acts lags the tracked hand.
 
 use super::num;
-use super::options::{comma_list, scale};
+use super::options::{NoiseSourceArgs, comma_list, scale};
 use crate::cli::Outcome;
 use crate::cli::args::count;
 use crate::cli::options::JsonOutput;
 use coulomb_hands::eval::NoiseUnit;
 use coulomb_hands::eval::latency::{LatencyOptions, LatencyStudy, latency};
-use std::path::PathBuf;
 use std::sync::LazyLock;
 
 /// The default noise strengths, as `--noise-mm` takes them.
@@ -27,14 +26,8 @@ pub struct LatencyArgs {
     #[arg(long, value_name = "SCALE,...", value_delimiter = ',', value_parser = scale,
           conflicts_with = "noise_mm")]
     noise: Option<Vec<f32>>,
-    /// Take the tracking noise from these recordings, comma-separated (default: the
-    /// bundled Leap Motion recordings).
-    #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
-    noise_from: Vec<PathBuf>,
-    /// Draw white tracking noise instead, for a tracker at this frame rate: every joint off
-    /// by a fresh Gaussian error each frame (1 mm rms per axis at --noise 1).
-    #[arg(long, value_name = "HZ", conflicts_with = "noise_from")]
-    noise_white: Option<f32>,
+    #[command(flatten)]
+    noise_source: NoiseSourceArgs,
     /// Noise streams averaged per strength.
     #[arg(long, default_value_t = LatencyOptions::STREAMS, value_parser = count())]
     streams: usize,
@@ -52,8 +45,8 @@ impl LatencyArgs {
         let options = LatencyOptions {
             noise,
             noise_unit,
-            noise_from: self.noise_from,
-            noise_white: self.noise_white,
+            noise_from: self.noise_source.noise_from,
+            noise_white: self.noise_source.noise_white,
             streams: self.streams,
             ..LatencyOptions::default()
         };

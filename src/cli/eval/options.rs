@@ -20,14 +20,8 @@ pub struct ConditionArgs {
     #[arg(long, value_name = "SCALE", default_value_t = Conditions::PERCEPTION,
           value_parser = scale)]
     perception: f32,
-    /// Take the tracking noise from these recordings, comma-separated (default: the
-    /// bundled Leap Motion recordings).
-    #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
-    noise_from: Vec<PathBuf>,
-    /// Draw white tracking noise instead, for a tracker at this frame rate: every joint off
-    /// by a fresh Gaussian error each frame (1 mm rms per axis at --noise 1).
-    #[arg(long, value_name = "HZ", conflicts_with = "noise_from")]
-    noise_white: Option<f32>,
+    #[command(flatten)]
+    noise_source: NoiseSourceArgs,
     /// Threads to run trials on (the results do not depend on it) [default: the cores].
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
     threads: Option<u16>,
@@ -38,10 +32,23 @@ impl ConditionArgs {
     /// in `noise_unit`s.
     pub fn conditions(self, noise_unit: NoiseUnit) -> Conditions {
         let threads = self.threads.map_or_else(trial::default_threads, usize::from);
-        let (perception, noise_from, noise_white) =
-            (self.perception, self.noise_from, self.noise_white);
-        Conditions { perception, noise_from, noise_white, noise_unit, threads }
+        let NoiseSourceArgs { noise_from, noise_white } = self.noise_source;
+        Conditions { perception: self.perception, noise_from, noise_white, noise_unit, threads }
     }
+}
+
+/// Where a study's tracking noise comes from: shared by the studies' conditions and
+/// `eval latency`.
+#[derive(clap::Args)]
+pub struct NoiseSourceArgs {
+    /// Take the tracking noise from these recordings, comma-separated (default: the
+    /// bundled Leap Motion recordings).
+    #[arg(long, value_name = "FILE,...", value_delimiter = ',')]
+    pub noise_from: Vec<PathBuf>,
+    /// Draw white tracking noise instead, for a tracker at this frame rate: every joint off
+    /// by a fresh Gaussian error each frame (1 mm rms per axis at --noise 1).
+    #[arg(long, value_name = "HZ", conflicts_with = "noise_from")]
+    pub noise_white: Option<f32>,
 }
 
 /// How many synthetic users a study draws, and how many trials each runs,
