@@ -173,19 +173,35 @@ fn rotation_arc(from: Vec3, to: Vec3) -> Quat {
     }
 }
 
-/// The palm surface point under C: where a ray from C along −n leaves the
-/// palm box while C is inside it, else the palm's closest point to C.
+/// The palm surface point under C: while C is inside the palm box, where a
+/// ray from C along −n leaves it, else the palm's closest point to C. The
+/// ray measures the depth along the object's normal, so that a ball sunk
+/// into the palm is pushed straight out. But an object's normal can lie
+/// along the palm: a box's side face, its edge poked into the palm's face.
+/// Its ray would then graze under the face, or run along the palm to its
+/// far end, and read centimetres of depth where C is a millimetre in. So
+/// the ray's exit is under C only through a face turned within 60° of −n
+/// (as in [`palm_face_under`]) and no further from C than the palm is
+/// thick; otherwise the nearest face's point is.
 fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
     let local = p.to_local(c);
-    if !local.abs().cmple(p.half_extents).all() {
-        return p.to_world(local.clamp(-p.half_extents, p.half_extents));
+    let h = p.half_extents;
+    if !local.abs().cmple(h).all() {
+        return p.to_world(local.clamp(-h, h));
     }
     let dir = p.rotation.inverse() * -n;
-    let exit = (0..3)
+    let (t, axis) = (0..3)
         .filter(|&i| dir[i].abs() > 1e-6)
-        .map(|i| (p.half_extents[i].copysign(dir[i]) - local[i]) / dir[i])
-        .fold(f32::INFINITY, f32::min);
-    if exit.is_finite() { c - n * exit } else { c }
+        .map(|i| ((h[i].copysign(dir[i]) - local[i]) / dir[i], i))
+        .fold((f32::INFINITY, 0), |a, b| if b.0 < a.0 { b } else { a });
+    let facing = dir[axis].abs() >= 0.5;
+    if t.is_finite() && facing && t * dir[axis].abs() <= 2.0 * h.min_element() {
+        return c - n * t;
+    }
+    let nearest = (h - local.abs()).min_position();
+    let mut on_face = local;
+    on_face[nearest] = h[nearest].copysign(local[nearest]);
+    p.to_world(on_face)
 }
 
 /// How far inside a palm face's edges (m) a contact must press for the
@@ -408,6 +424,61 @@ fn lay_samples(offsets: Vec<Vec3>, c: Vec3, skin: Quat, object: &ObjectView) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A palm turned 40° about its length, its face's outward normal
+    /// `up`, its length `along` and its width `across` (world).
+    fn turned_palm() -> (Palm, Vec3, Vec3, Vec3) {
+        let rotation = Quat::from_rotation_z(0.7);
+        let palm = Palm {
+            center: Vec3::new(0.13, 0.91, -0.27),
+            rotation,
+            half_extents: Vec3::new(0.037, 0.011, 0.048),
+        };
+        (palm, rotation * Vec3::Y, rotation * Vec3::Z, rotation * Vec3::X)
+    }
+
+    #[test]
+    fn an_object_sunk_into_the_palm_face_is_under_c_along_its_normal() {
+        let (palm, up, along, across) = turned_palm();
+        let face = palm.center + up * 0.011;
+        // A ball's C, 3 mm into the face, its outward normal into the palm.
+        let c = face - up * 0.003 + across * 0.01;
+        let p = palm_point_under(&palm, c, -up);
+        assert!((p - (c + up * 0.003)).length() < 1e-6, "{p} for {c}");
+        // The normal tilted 35° along the palm: the ray through the face.
+        let n = -(up * 35f32.to_radians().cos() + along * 35f32.to_radians().sin());
+        let p = palm_point_under(&palm, c, n);
+        let t = 0.003 / 35f32.to_radians().cos();
+        assert!((p - (c - n * t)).length() < 1e-6, "{p} for {c}");
+        // Sunk past the palm's middle, it is still pushed back out by the
+        // face it came through, not through the palm.
+        let c = face - up * 0.015;
+        assert!((palm_point_under(&palm, c, -up) - (c + up * 0.015)).length() < 1e-6);
+    }
+
+    #[test]
+    fn a_normal_along_the_palm_reads_the_depth_to_the_nearest_face() {
+        // A box's edge, 2.3 mm into the palm's face, with its side face's
+        // outward normal (the one the closest-feature query gave) along
+        // the palm's length: a ray along −n would run along the palm to its
+        // far end, 7 cm. The palm's face is 2.3 mm away.
+        let (palm, up, along, across) = turned_palm();
+        let c = palm.center + up * 0.0087 + along * 0.0217 + across * 0.0067;
+        let n = (along + across * 0.08 - up * 0.01).normalize();
+        let p = palm_point_under(&palm, c, n);
+        assert!((p - (c + up * 0.0023)).length() < 1e-6, "{p} for {c}");
+        // An edge 0.3 mm in, its normal along the palm's length and tipped
+        // a hair towards the face: the ray would graze under the face for
+        // 3 cm before it left through it.
+        let c = palm.center + up * 0.0107 - across * 0.004;
+        let n = (along * 0.995 - up * 0.01).normalize();
+        let p = palm_point_under(&palm, c, n);
+        assert!((p - (c + up * 0.0003)).length() < 1e-6, "{p} for {c}");
+        // C outside the palm: its closest point, as before.
+        let out = palm.center + up * 0.02 + across * 0.05;
+        let p = palm_point_under(&palm, out, n);
+        assert!((p - (palm.center + up * 0.011 + across * 0.037)).length() < 1e-6);
+    }
 
     #[test]
     fn the_inlined_rotation_arc_has_glam_s_bits() {

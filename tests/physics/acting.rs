@@ -145,8 +145,8 @@ fn under_white_jitter_the_grip_holds_and_lets_go_where_a_filter_without_a_least_
 }
 
 #[test]
-fn under_jitter_a_hand_that_opens_lets_go_within_30_ms_of_the_raw_tracked_hand() {
-    let (mut compared, mut lifted, mut lifted_raw) = (0, 0, 0);
+fn under_jitter_a_hand_that_opens_lets_go_about_as_soon_as_the_raw_tracked_hand() {
+    let (mut lates, mut lifted, mut lifted_raw) = (Vec::new(), 0, 0);
     for (seed, (acting, tracked)) in runs().iter().enumerate() {
         let lifts = |h: &Hold| h.sagged < 0.02 && h.lifted_after > 0.005;
         lifted += usize::from(lifts(acting));
@@ -155,15 +155,21 @@ fn under_jitter_a_hand_that_opens_lets_go_within_30_ms_of_the_raw_tracked_hand()
         if acting.sagged > 0.02 || tracked.sagged > 0.02 || lifts(tracked) {
             continue;
         }
-        compared += 1;
         // The filter's lag on a grip opening at once under 2 mm is about 10
         // ms (`eval latency`); opening over 0.3 s, the last pad lets go a
-        // little later.
+        // little later. How much the shape is smoothed follows each
+        // stream's own measured jitter, so the lag differs by stream: a
+        // 1 Hz open-close follows 5 to 50 ms behind at 2 mm (the book's
+        // "Tracking noise").
         let late = let_go(acting) - let_go(tracked);
-        assert!(late < 0.03, "seed {seed}: {late:.3} s later: {acting:?} against {tracked:?}");
+        assert!(late < 0.05, "seed {seed}: {late:.3} s later: {acting:?} against {tracked:?}");
         assert!(acting.off < 0.01, "seed {seed}: set down off its place: {acting:?}");
+        lates.push(late);
     }
-    assert!(compared >= 6, "only {compared} runs held by both hands");
+    assert!(lates.len() >= 6, "only {} runs held by both hands", lates.len());
+    lates.sort_by(f32::total_cmp);
+    let median = lates[lates.len() / 2];
+    assert!(median < 0.02, "the median stream lets go {median:.3} s later: {lates:?}");
     // Under jitter, a cube can creep up the claw's fingertips and ride on
     // the opened fingers as the hand withdraws, with or without the filter.
     assert!(lifted <= lifted_raw + 1, "the opened hand lifted the cube {lifted} times");
