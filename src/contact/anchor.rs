@@ -173,16 +173,17 @@ fn rotation_arc(from: Vec3, to: Vec3) -> Quat {
     }
 }
 
-/// The palm surface point under C: while C is inside the palm box, where a
-/// ray from C along −n leaves it, else the palm's closest point to C. The
-/// ray measures the depth along the object's normal, so that a ball sunk
-/// into the palm is pushed straight out. But an object's normal can lie
-/// along the palm: a box's side face, its edge poked into the palm's face.
-/// Its ray would then graze under the face, or run along the palm to its
-/// far end, and read centimetres of depth where C is a millimetre in. So
-/// the ray's exit is under C only through a face turned within 60° of −n
-/// (as in [`palm_face_under`]) and no further from C than the palm is
-/// thick; otherwise the nearest face's point is.
+/// The palm surface point under C: while C is inside the palm box, along
+/// −n from C, else the palm's closest point to C. Inside, a ray from C
+/// along −n finds the palm's face where the object's normal says it is,
+/// so that a ball sunk into the palm is pushed straight out. But an
+/// object's normal can lie along the palm (a box's side face, its edge
+/// tipped into the palm's face), and its ray then grazes under the face,
+/// or runs along the palm to its far end, and reads centimetres of depth
+/// for a C a millimetre in. So the ray is taken to the first face it
+/// meets that is turned within 60° of −n (as for [`palm_face_under`]),
+/// past any edge it merely grazes, when that face is no further from C
+/// than the palm is thick; otherwise the nearest face's point is under C.
 fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
     let local = p.to_local(c);
     let h = p.half_extents;
@@ -190,13 +191,19 @@ fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
         return p.to_world(local.clamp(-h, h));
     }
     let dir = p.rotation.inverse() * -n;
-    let (t, axis) = (0..3)
-        .filter(|&i| dir[i].abs() > 1e-6)
-        .map(|i| ((h[i].copysign(dir[i]) - local[i]) / dir[i], i))
-        .fold((f32::INFINITY, 0), |a, b| if b.0 < a.0 { b } else { a });
-    let facing = dir[axis].abs() >= 0.5;
-    if t.is_finite() && facing && t * dir[axis].abs() <= 2.0 * h.min_element() {
-        return c - n * t;
+    let thick = 2.0 * h.min_element();
+    let facing_exit = (0..3)
+        .filter(|&i| dir[i].abs() >= 0.5)
+        .map(|i| (h[i] - local[i] * dir[i].signum(), dir[i].abs()))
+        .filter(|&(distance, _)| distance <= thick)
+        .map(|(distance, along)| distance / along)
+        .fold(f32::INFINITY, f32::min);
+    if facing_exit.is_finite() {
+        // Past a grazed edge the face's plane lies beyond the palm: its
+        // point under C is on the palm's edge.
+        let under = local + dir * facing_exit;
+        let on_palm = under.abs().cmple(h + Vec3::splat(1e-6)).all();
+        return if on_palm { c - n * facing_exit } else { p.to_world(under.clamp(-h, h)) };
     }
     let nearest = (h - local.abs()).min_position();
     let mut on_face = local;
@@ -457,7 +464,7 @@ mod tests {
     }
 
     #[test]
-    fn a_normal_along_the_palm_reads_the_depth_to_the_nearest_face() {
+    fn a_normal_along_the_palm_reads_the_depth_of_c_and_a_grazed_edge_is_passed() {
         // A box's edge, 2.3 mm into the palm's face, with its side face's
         // outward normal (the one the closest-feature query gave) along
         // the palm's length: a ray along −n would run along the palm to its
@@ -474,6 +481,15 @@ mod tests {
         let n = (along * 0.995 - up * 0.01).normalize();
         let p = palm_point_under(&palm, c, n);
         assert!((p - (c + up * 0.0003)).length() < 1e-6, "{p} for {c}");
+        // A handle across the palm's edge: C 20 µm inside the edge, 1.3 mm
+        // under the face, its normal into the face but for a hair towards
+        // the edge, which the ray leaves by at once. The face is 1.3 mm
+        // along it, on the palm's edge.
+        let c = palm.center + up * 0.0097 + across * 0.03698 + along * 0.024;
+        let n = -(up + across * 0.02).normalize();
+        let p = palm_point_under(&palm, c, n);
+        let on_edge = palm.center + up * 0.011 + across * 0.037 + along * 0.024;
+        assert!((p - on_edge).length() < 1e-5, "{p} for {c}");
         // C outside the palm: its closest point, as before.
         let out = palm.center + up * 0.02 + across * 0.05;
         let p = palm_point_under(&palm, out, n);

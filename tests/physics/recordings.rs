@@ -171,11 +171,12 @@ fn each_fist_of_the_grab_recording_holds_a_box_and_lets_it_go() {
     let (first, fall) = &verdicts[0];
     assert_held_then_released("grab.json.lz", first, *fall, 0.04);
     // The second fist opens 0.3 s before the recording ends. The 4 cm box
-    // is 3 mm wider than the opened hand's gap, and those phalanges still
-    // pinch it as it slips out, at half a metre a second, when the
-    // recording ends: its release is not judged, only its hold.
+    // is 3 mm wider than the opened hand's gap, and those phalanges pinch
+    // it until it slips out, a quarter of a second after the hand opened:
+    // let go, but not yet fallen its size when the recording ends.
     let (second, _) = &verdicts[1];
     assert!(second.held() && second.drift < second.slip_bound, "{second}");
+    assert_eq!(second.released, Some(true), "{second}");
     assert!(first.open_at < second.closing_at);
 }
 
