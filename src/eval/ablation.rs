@@ -15,7 +15,7 @@ pub type Departure = (&'static str, fn(&mut InteractionConfig, &InteractionConfi
 
 /// Every departure of [`Method::Coulomb`] from [`Method::Thesis`]; each
 /// takes its value from the default config, the one home of the values.
-pub const DEPARTURES: [Departure; 11] = [
+pub const DEPARTURES: [Departure; 12] = [
     ("Coulomb's kinetic friction", |c, _| c.kinetic = KineticFriction::Coulomb),
     ("contact damper", |c, d| c.damping_ratio = d.damping_ratio),
     ("force cap", |c, d| c.force_cap = d.force_cap),
@@ -26,6 +26,7 @@ pub const DEPARTURES: [Departure; 11] = [
     ("patch deviation springs", |c, d| c.deviation_springs = d.deviation_springs),
     ("slip re-centring", |c, d| c.slip_recentre = d.slip_recentre),
     ("line contacts", |c, d| c.line_contacts = d.line_contacts),
+    ("rolling contacts", |c, d| c.rolling = d.rolling),
     ("tracking filter", |c, d| c.tracking = d.tracking),
 ];
 

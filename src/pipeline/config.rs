@@ -131,11 +131,11 @@ pub struct InteractionConfig {
     /// Off, every finger patch is the pad's ring, as in the thesis.
     pub line_contacts: bool,
     /// A contact on a curved object follows the two surfaces as they roll
-    /// on each other (`contact/roll.rs`), so a ball rolls down a palm with
-    /// its true depth at every step. Off (default, and the thesis's), C
-    /// stays pinned to the object while it sticks: a grip wrapped round a
-    /// handle keeps its hold only through the skin's wrap, which the
-    /// rolling patch does not yet resist (the book's "Rolling contacts").
+    /// on each other (default; `contact/roll.rs`), so a ball rolls down a
+    /// palm with its true depth at every step, and static friction holds
+    /// only the slip where they touch. Off (the thesis's), C stays pinned
+    /// to the object while it sticks, and a ball rolling on the skin sinks
+    /// into it and kicks (the book's "Rolling contacts").
     pub rolling: bool,
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.
@@ -199,7 +199,7 @@ impl Default for InteractionConfig {
             deviation_springs: true,
             slip_recentre: true,
             line_contacts: true,
-            rolling: false,
+            rolling: true,
             stability_limit: true,
             virtual_fingers: true,
             grab: None,

@@ -170,7 +170,11 @@ fn a_ball_pinned_to_the_palm_or_too_slick_to_roll_misses_rolling_s_law() {
     // with the ball, which sinks into the palm while the measured depth
     // falls, then slips, finds its depth again and kicks. Its acceleration
     // over the window is far from (5/7)·g·sin θ.
-    let pinned = variant("ball-roll", r#""rolling": true"#, r#""rolling": false"#);
+    let pinned = variant(
+        "ball-roll",
+        r#""duration": 1.0,"#,
+        r#""duration": 1.0, "config": {"rolling": false},"#,
+    );
     assert!(!check(&pinned, "acceleration").passed, "{}", table(&pinned));
     // Too slick to roll: μ 0.05, under the (2/7)·tan 14° = 0.071 rolling
     // needs. It slides at g (sin θ − μ cos θ) = 1.90 m/s², past the bound,

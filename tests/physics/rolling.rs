@@ -2,17 +2,19 @@
 //! rigid-body mechanics says, with its true depth at every step and no
 //! kick; too steep, it slides and spins up as Coulomb's law says; between
 //! a thumb and a finger moving apart, a ball turns as they set it. The
-//! thesis's anchored C (rolling off, the default) is the negative control.
+//! thesis's anchored C (rolling off, as `--method thesis` has it) is the
+//! negative control.
 
 use super::*;
 use coulomb_hands::{Finger, InteractionConfig, Method, ObjectDesc, Palm, Phalanx, ShapeDesc};
 
 const G: f32 = 9.81;
 
-/// The default settings with rolling contacts on (off by default: the
-/// book's "Rolling contacts" says why).
+/// The default settings: rolling contacts are on.
 fn rolling() -> InteractionConfig {
-    InteractionConfig { rolling: true, ..InteractionConfig::default() }
+    let config = InteractionConfig::default();
+    assert!(config.rolling, "rolling contacts are the default");
+    config
 }
 
 /// What a run down the palm measured, over its middle stretch.
