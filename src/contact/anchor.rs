@@ -193,7 +193,7 @@ fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
     let dir = p.rotation.inverse() * -n;
     let thick = 2.0 * h.min_element();
     let facing_exit = (0..3)
-        .filter(|&i| dir[i].abs() >= 0.5)
+        .filter(|&i| dir[i].abs() >= FACING_COS)
         .map(|i| (h[i] - local[i] * dir[i].signum(), dir[i].abs()))
         .filter(|&(distance, _)| distance <= thick)
         .map(|(distance, along)| distance / along)
@@ -210,6 +210,11 @@ fn palm_point_under(p: &Palm, c: Vec3, n: Vec3) -> Vec3 {
     on_face[nearest] = h[nearest].copysign(local[nearest]);
     p.to_world(on_face)
 }
+
+/// cos 60°: a palm face turned further than this from an object's normal
+/// does not press along it (its normal is not the contact's, and a ray
+/// along the object's normal only grazes it).
+const FACING_COS: f32 = 0.5;
 
 /// How far inside a palm face's edges (m) a contact must press for the
 /// face's normal to be the contact normal. At the edge itself the palm has
@@ -228,7 +233,7 @@ pub(super) fn palm_face_under(palm: &Palm, local: Vec3, n: Vec3) -> Option<Vec3>
     let axis = (local / h).abs().max_position();
     let face = Vec3::AXES[axis] * local[axis].signum();
     let interior = (0..3).all(|j| j == axis || local[j].abs() <= h[j] - PALM_EDGE_MARGIN);
-    let facing = -(palm.rotation * face).dot(n) >= 0.5;
+    let facing = -(palm.rotation * face).dot(n) >= FACING_COS;
     (interior && facing && (local[axis].abs() - h[axis]).abs() <= PALM_EDGE_MARGIN).then_some(face)
 }
 

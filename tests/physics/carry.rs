@@ -67,14 +67,18 @@ fn slide_onset(config: InteractionConfig, across_fingers: bool) -> (f32, f32, us
             let local = palm.to_local(w.object_state(id).unwrap().position);
             if t >= settle && rest.is_none() {
                 rest = Some(local);
-                let presses = |b: &dyn Fn(Bone) -> bool| {
-                    w.contacts_on(id).iter().any(|c| b(c.bone) && c.normal_force > 0.0)
-                };
-                pressing = usize::from(presses(&|b| b == Bone::Palm))
-                    + [Finger::Index, Finger::Middle, Finger::Ring, Finger::Pinky]
-                        .into_iter()
-                        .filter(|&f| presses(&|b| matches!(b, Bone::Finger(g, _) if g == f)))
-                        .count();
+                // The palm, and each finger but the thumb, that presses.
+                let limbs: std::collections::BTreeSet<_> = w
+                    .contacts_on(id)
+                    .iter()
+                    .filter(|c| c.normal_force > 0.0)
+                    .filter_map(|c| match c.bone {
+                        Bone::Palm => Some(None),
+                        Bone::Finger(f, _) if f != Finger::Thumb => Some(Some(f as usize)),
+                        Bone::Finger(..) => None,
+                    })
+                    .collect();
+                pressing = limbs.len();
             }
             let Some(rest) = rest else { return };
             let moving = w.contacts_on(id).iter().any(|c| c.state == FrictionState::Dynamic);
