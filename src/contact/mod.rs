@@ -189,6 +189,9 @@ pub(crate) struct LawSettings {
     pub line_band: Option<f32>,
     /// Contacts follow the surfaces as they roll (`roll.rs`).
     pub rolling: bool,
+    /// The sliding speed over which static friction fades to kinetic (m/s),
+    /// or `None` for the thesis's sudden drop ([`friction::stribeck`]).
+    pub stribeck_speed: Option<f32>,
 }
 
 /// How a contact presses this step, before any force: where its anchors
@@ -214,6 +217,20 @@ impl Press {
     #[inline]
     pub fn normal(&self) -> Vec3 {
         self.site.n
+    }
+
+    /// The friction coefficients of skin sliding over the object as fast as
+    /// the bone moves along its surface here ([`friction::stribeck`]).
+    #[inline(always)]
+    fn friction(&self, mu: FrictionCoefficients, settings: &LawSettings) -> FrictionCoefficients {
+        let Some(v_s) = settings.stribeck_speed else { return mu };
+        if mu.static_mu == mu.dynamic_mu {
+            // Nothing to fade (most materials): skip the speed and the exp.
+            return mu;
+        }
+        let relative = self.bone_velocity - self.object_velocity;
+        let sliding = relative - relative.dot(self.site.n) * self.site.n;
+        mu.sliding_at(sliding.length(), v_s)
     }
 }
 
@@ -301,7 +318,7 @@ impl Contact {
         let at = press.site;
         self.anchor.limited_depth = press.limited.max(0.0);
         let reaction = Self::reaction(press, object, settings);
-        let (gamma, mu) = (object.gamma, object.mu);
+        let (gamma, mu) = (object.gamma, press.friction(object.mu, settings));
         let law = friction::contact_law(
             reaction,
             at.n,

@@ -15,7 +15,7 @@ pub type Departure = (&'static str, fn(&mut InteractionConfig, &InteractionConfi
 
 /// Every departure of [`Method::Coulomb`] from [`Method::Thesis`]; each
 /// takes its value from the default config, the one home of the values.
-pub const DEPARTURES: [Departure; 12] = [
+pub const DEPARTURES: [Departure; 13] = [
     ("Coulomb's kinetic friction", |c, _| c.kinetic = KineticFriction::Coulomb),
     ("contact damper", |c, d| c.damping_ratio = d.damping_ratio),
     ("force cap", |c, d| c.force_cap = d.force_cap),
@@ -27,6 +27,7 @@ pub const DEPARTURES: [Departure; 12] = [
     ("slip re-centring", |c, d| c.slip_recentre = d.slip_recentre),
     ("line contacts", |c, d| c.line_contacts = d.line_contacts),
     ("rolling contacts", |c, d| c.rolling = d.rolling),
+    ("Stribeck fade", |c, d| c.stribeck_speed = d.stribeck_speed),
     ("tracking filter", |c, d| c.tracking = d.tracking),
 ];
 

@@ -11,6 +11,8 @@
 //!   damper);
 //! * [`slip`]: where a slipping spring re-anchors, one rule for a whole
 //!   contact and for each skin-patch sample;
+//! * [`stribeck`]: how static friction fades to kinetic as skin slides
+//!   faster (a departure from the thesis's sudden drop);
 //! * [`gamma`]: the contact stiffness γ, Eq. 3.11;
 //! * [`grip`]: the whole grip: the two sides of one hand's grip press as
 //!   equally stiff virtual fingers, and the pad's damper loses what a
@@ -33,6 +35,7 @@ pub mod grip;
 pub mod law;
 pub mod safeguards;
 pub mod slip;
+pub mod stribeck;
 
 pub use gamma::{MAX_PENETRATION_FRACTION, auto_gamma};
 pub use grip::{
@@ -48,6 +51,7 @@ pub use safeguards::{
     speed_limited_depth, spring_at_depth,
 };
 pub use slip::{kinetic_stretch, slipped_stretch, slips, static_stretch_squared};
+pub use stribeck::kinetic_mu;
 
 use glam::Vec3;
 

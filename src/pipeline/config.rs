@@ -137,6 +137,16 @@ pub struct InteractionConfig {
     /// to the object while it sticks, and a ball rolling on the skin sinks
     /// into it and kicks (the book's "Rolling contacts").
     pub rolling: bool,
+    /// Static friction fades to kinetic as skin slides faster, over this
+    /// speed (m/s), as measured skin friction does
+    /// ([`crate::friction::stribeck`]): skin that creeps holds with μ_st,
+    /// skin that slides a few times faster than this with μ_dyn. The
+    /// default, 5 mm/s, is the middle of the Stribeck speeds friction
+    /// models use (1–10 mm/s; Olsson et al. 1998), far above the creep of
+    /// a contact under an object that stays put and far below the tracked
+    /// hand's jitter. `None` drops a contact to μ_dyn the instant it leaves
+    /// the cone, as in the thesis.
+    pub stribeck_speed: Option<f32>,
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.
     pub stability_limit: bool,
@@ -200,6 +210,7 @@ impl Default for InteractionConfig {
             slip_recentre: true,
             line_contacts: true,
             rolling: true,
+            stribeck_speed: Some(0.03),
             stability_limit: true,
             virtual_fingers: true,
             grab: None,
@@ -284,6 +295,11 @@ impl InteractionConfig {
             && !pos(v)
         {
             return err("max_penetration_speed", format!("must be positive, got {v}"));
+        }
+        if let Some(v) = self.stribeck_speed
+            && !pos(v)
+        {
+            return err("stribeck_speed", format!("must be positive, got {v}"));
         }
         if !pos(self.probe_offset) {
             return err("probe_offset", format!("must be positive, got {}", self.probe_offset));

@@ -47,6 +47,8 @@ impl Method {
     /// (no deviation springs), slipping C moved from where it is rather
     /// than re-centred under the bone, every finger patch the pad's ring (no
     /// line contacts), C pinned to the object while it sticks (no rolling),
+    /// a contact that leaves the cone dropping at once to μ_dyn (no
+    /// Stribeck fade),
     /// and the tracked hand acting as it is
     /// tracked, jitter and all. One difference remains: `p`
     /// is the bone's surface point, not the phalanx centroid (see
@@ -69,6 +71,7 @@ impl Method {
                 slip_recentre: false,
                 line_contacts: false,
                 rolling: false,
+                stribeck_speed: None,
                 tracking: None,
                 ..base
             },

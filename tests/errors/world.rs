@@ -49,6 +49,10 @@ fn every_config_field_is_checked_by_name_with_its_value() {
     names(damping, &["config: damping_ratio: ", "got -0.5"]);
     let speed = config_error(|c| c.max_penetration_speed = Some(0.0));
     names(speed, &["config: max_penetration_speed: ", "got 0"]);
+    let fade = config_error(|c| c.stribeck_speed = Some(-0.02));
+    names(fade, &["config: stribeck_speed: ", "got -0.02"]);
+    let endless = config_error(|c| c.stribeck_speed = Some(f32::INFINITY));
+    names(endless, &["config: stribeck_speed: ", "got inf"]);
     names(config_error(|c| c.probe_offset = -0.004), &["config: probe_offset: ", "got -0.004"]);
     let filter = |change: fn(&mut TrackingFilter)| {
         config_error(move |c| {

@@ -308,6 +308,7 @@ impl StepScratch {
             recentre: config.slip_recentre,
             line_band: config.line_contacts.then_some(config.contact_offset),
             rolling: config.rolling,
+            stribeck_speed: config.stribeck_speed,
         };
         StepScratch { detector, settings, ..StepScratch::default() }
     }

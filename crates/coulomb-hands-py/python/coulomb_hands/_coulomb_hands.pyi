@@ -121,6 +121,7 @@ class Config:
     slip_recentre: bool
     line_contacts: bool
     rolling: bool
+    stribeck_speed: Optional[float]
     stability_limit: bool
     grab: Optional[str]
     hand_friction: bool
