@@ -281,6 +281,7 @@ pub fn accuracy(
         seed: options.seed,
         noise: Some(scale),
         noise_rms_mm: Some(noise.rms_mm(scale)),
+        noise_source: Some(sweep::summary(&noise)),
         perception: Some(options.conditions.perception),
         methods,
         thesis: thesis_table(),

@@ -56,7 +56,7 @@ impl SweepOptions {
 }
 
 /// The summary of `noise`.
-fn summary(noise: &TrackingNoise) -> NoiseSummary {
+pub(crate) fn summary(noise: &TrackingNoise) -> NoiseSummary {
     let lengths: Vec<f64> = noise.dropout_lengths.iter().map(|l| l * 1e3).collect();
     NoiseSummary {
         sources: noise.sources.clone(),

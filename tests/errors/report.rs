@@ -152,6 +152,7 @@ fn the_json_of_eval_accuracy_and_bench_reads_as_the_reports_inputs() {
         seed: 7,
         noise: Some(0.5),
         noise_rms_mm: None,
+        noise_source: None,
         perception: Some(1.0),
         methods: vec![method("coulomb", vec![1.0, 3.0], 2.0), method("thesis", vec![], f64::NAN)],
         thesis: vec![ThesisResult {

@@ -174,6 +174,7 @@ impl ChessboardTask {
                 seed: self.options.seed,
                 noise: None,
                 noise_rms_mm: None,
+                noise_source: None,
                 perception: None,
                 methods: Vec::new(),
                 thesis: thesis_table(),

@@ -66,10 +66,11 @@ pub fn study(options: &AccuracyOptions, show: bool) -> Result<AccuracyStudy, Run
 /// Table 5.2's shape: one row per method and strategy, the thesis's figure
 /// beside it.
 fn print_table(r: &AccuracyStudy) {
-    let noise = match (r.noise, r.noise_rms_mm) {
-        (Some(n), Some(mm)) => format!("x{n} ({mm:.2} mm rms)"),
-        (Some(n), None) => format!("x{n}"),
-        (None, _) => "—".into(),
+    let noise = match (r.noise, r.noise_rms_mm, &r.noise_source) {
+        (Some(n), Some(mm), Some(source)) => format!("x{n} ({mm:.2} mm rms, {})", source.kind()),
+        (Some(n), Some(mm), None) => format!("x{n} ({mm:.2} mm rms)"),
+        (Some(n), None, _) => format!("x{n}"),
+        (None, ..) => "—".into(),
     };
     let sight = r.perception.map_or("—".into(), |p| format!("{p}"));
     println!(

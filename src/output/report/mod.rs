@@ -93,6 +93,11 @@ pub struct AccuracyStudy {
     /// before the study had it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub noise_rms_mm: Option<f64>,
+    /// Where that noise came from: the recordings whose residuals it
+    /// replays, or the white jitter drawn (absent from files written
+    /// before the study recorded it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub noise_source: Option<NoiseSummary>,
     /// The users' glance errors, times the display's (absent: exact).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub perception: Option<f32>,

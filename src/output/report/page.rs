@@ -225,8 +225,16 @@ fn accuracy(p: &mut String, s: &AccuracyStudy) {
         s.users,
         s.trials,
         s.seed,
-        match (s.noise, s.perception) {
-            (Some(n), Some(g)) => format!(
+        match (s.noise, s.perception, &s.noise_source) {
+            (Some(n), Some(g), Some(source)) => format!(
+                " Tracking noise ×{n} of {}, {:.2} mm rms per joint and axis; glance errors \
+                 ×{g} those of the thesis's headset.",
+                escape(&source.kind()),
+                s.noise_rms_mm.unwrap_or(source.rms_mm_at(n))
+            ),
+            // Files written before the study recorded its noise's source
+            // ran on the bundled recordings'.
+            (Some(n), Some(g), None) => format!(
                 " Tracking noise ×{n} the bundled recordings' own; glance errors ×{g} those \
                  of the thesis's headset."
             ),

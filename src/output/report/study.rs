@@ -52,6 +52,22 @@ impl NoiseSummary {
         }
     }
 
+    /// What the noise is, in words: "white jitter at 100 Hz", or "the
+    /// residuals of grab.json.lz, pinch.json.lz" (file names only).
+    pub fn kind(&self) -> String {
+        match self.sources.as_slice() {
+            [] => "no recorded noise".into(),
+            [white] if white.starts_with("white") => white.clone(),
+            files => {
+                let name = |f: &String| {
+                    Path::new(f).file_name().map_or(f.clone(), |n| n.to_string_lossy().into())
+                };
+                let names: Vec<String> = files.iter().map(name).collect();
+                format!("the residuals of {}", names.join(", "))
+            }
+        }
+    }
+
     /// The residuals' rms per joint and axis at `scale` times their own
     /// (mm): what a row of that strength shook the hand by.
     pub fn rms_mm_at(&self, scale: f32) -> f64 {

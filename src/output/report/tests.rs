@@ -269,3 +269,36 @@ fn dates_are_civil_utc() {
     assert_eq!(utc_date(951_782_400), "2000-02-29 00:00 UTC");
     assert_eq!(utc_date(1_700_000_000), "2023-11-14 22:13 UTC");
 }
+
+#[test]
+fn the_accuracy_section_names_the_noise_it_ran_under() {
+    let mut study: AccuracyStudy = serde_json::from_str(ACCURACY_JSON).unwrap();
+    let white = NoiseSummary {
+        sources: vec!["white jitter at 75 Hz".into()],
+        rms_mm: 1.0,
+        dropouts_per_s: 0.0,
+        dropout_ms: 0.0,
+    };
+    assert_eq!(white.kind(), "white jitter at 75 Hz");
+    (study.noise, study.noise_rms_mm, study.perception) = (Some(2.5), Some(2.5), Some(1.0));
+    study.noise_source = Some(white);
+    let page_of = |study: &AccuracyStudy| {
+        let data = ReportData {
+            accuracy: Some(Sourced { source: "a.json".into(), data: study.clone() }),
+            ..ReportData::default()
+        };
+        html(&data)
+    };
+    let page = page_of(&study);
+    assert!(page.contains("Tracking noise ×2.5 of white jitter at 75 Hz, 2.50 mm rms"), "{page}");
+    assert!(!page.contains("bundled recordings"));
+    // Recordings are named by their file names; a file from before the
+    // study recorded its source ran on the bundled recordings.
+    let recorded = NoiseSummary {
+        sources: vec!["data/leap/grab.json.lz".into(), "/tmp/x/flap.json".into()],
+        ..study.noise_source.clone().unwrap()
+    };
+    assert_eq!(recorded.kind(), "the residuals of grab.json.lz, flap.json");
+    study.noise_source = None;
+    assert!(page_of(&study).contains("Tracking noise ×2.5 the bundled recordings' own"));
+}

@@ -29,6 +29,7 @@ fn a_scripted_trial_logs_its_error_and_time_beside_a_synthetic_study() {
         seed: 9,
         noise: Some(1.0),
         noise_rms_mm: Some(0.72),
+        noise_source: None,
         perception: Some(1.0),
         methods,
         thesis: thesis_table(),
