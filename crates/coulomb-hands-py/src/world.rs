@@ -9,7 +9,8 @@ use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape, Scene};
 use coulomb_hands::{
     ContactEventKind, FrictionState, GammaMode, HandId, InteractionConfig, InteractionWorld,
-    Material, ObjectDesc, ObjectError, ObjectId, ShapeDesc, Side, StaticDesc, WorldError,
+    Material, ObjectDesc, ObjectError, ObjectId, ObjectState, ShapeDesc, Side, StaticDesc,
+    WorldError,
 };
 use glam::{Quat, Vec3};
 use pyo3::prelude::*;
@@ -383,12 +384,12 @@ impl World {
         self.world.step_physics();
     }
 
-    /// The objects' names, by id.
-    fn object_names(&self) -> Vec<String> {
-        self.world
-            .object_ids()
-            .filter_map(|id| self.world.object_name(id).map(String::from))
-            .collect()
+    /// The objects' names, by id (item i is object i's); a removed
+    /// object's is None.
+    fn object_names(&self) -> Vec<Option<String>> {
+        let rows = self.world.object_count();
+        let name = |i: usize| self.world.object_name(ObjectId(i as u32)).map(String::from);
+        (0..rows).map(name).collect()
     }
 
     /// An object's mass (kg).
@@ -413,6 +414,13 @@ impl World {
         Ok(dict)
     }
 
+    /// Removes an object: what rested on it falls, its contacts end at the
+    /// next step, and its id is not given again. Its row of
+    /// [`Self::object_states`] is then NaN, its `present` False.
+    fn remove_object(&mut self, id: u32) -> PyResult<()> {
+        self.world.remove_object(ObjectId(id)).map_err(world_error)
+    }
+
     /// Holds an object fixed (True) or lets it move again.
     fn set_object_locked(&mut self, id: u32, locked: bool) -> PyResult<()> {
         self.world.set_object_locked(ObjectId(id), locked).map_err(world_error)
@@ -430,16 +438,26 @@ impl World {
         self.world.place_object(ObjectId(id), at, self::rotation(rotation)?).map_err(world_error)
     }
 
-    /// Every object's state, by id, as arrays: `position` (n, 3) m,
-    /// `rotation` (n, 4) x, y, z, w, `linvel` (n, 3) m/s, `angvel` (n, 3)
-    /// rad/s, `hand_force` (n, 3) N (thesis Eq. 3.10), `sleeping` (n,).
+    /// Every object's state, by id (row i is object i's), as arrays:
+    /// `position` (n, 3) m, `rotation` (n, 4) x, y, z, w, `linvel` (n, 3)
+    /// m/s, `angvel` (n, 3) rad/s, `hand_force` (n, 3) N (thesis
+    /// Eq. 3.10), `sleeping` (n,), and `present` (n,): False for a removed
+    /// object, whose row is NaN (and not sleeping).
     fn object_states<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let states = self
-            .world
-            .object_ids()
-            .map(|id| self.world.object_state(id))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(world_error)?;
+        let rows = self.world.object_count();
+        let gone = ObjectState {
+            position: Vec3::NAN,
+            rotation: Quat::from_xyzw(f32::NAN, f32::NAN, f32::NAN, f32::NAN),
+            linvel: Vec3::NAN,
+            angvel: Vec3::NAN,
+            hand_force: Vec3::NAN,
+            sleeping: false,
+        };
+        let (mut states, mut present) = (vec![gone; rows], vec![false; rows]);
+        for id in self.world.object_ids() {
+            states[id.0 as usize] = self.world.object_state(id).map_err(world_error)?;
+            present[id.0 as usize] = true;
+        }
         let dict = PyDict::new(py);
         dict.set_item("position", points_array(py, states.iter().map(|s| s.position))?)?;
         dict.set_item("rotation", quats_array(py, states.iter().map(|s| s.rotation))?)?;
@@ -447,6 +465,7 @@ impl World {
         dict.set_item("angvel", points_array(py, states.iter().map(|s| s.angvel))?)?;
         dict.set_item("hand_force", points_array(py, states.iter().map(|s| s.hand_force))?)?;
         dict.set_item("sleeping", values_array(py, states.iter().map(|s| s.sleeping)))?;
+        dict.set_item("present", values_array(py, present.into_iter()))?;
         Ok(dict)
     }
 

@@ -1,7 +1,7 @@
 """Physical outcomes through the package: a pinch holds a box by friction, and lets one
 heavier than mu * sum(f_n) / g slip; a pinch holds through a tracker's jitter, which the
 hand that acts leaves out; two worlds on two threads step as one after the other
-does."""
+does; a box on a removed block falls, and a removed pinched box ends its contacts."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Optional
 
 import numpy as np
+import pytest
 import coulomb_hands as ch
 from conftest import INDEX_DISTAL, THUMB_DISTAL, pinch
 
@@ -172,3 +173,34 @@ def test_a_hollow_ball_rolls_down_a_ramp_slower_than_a_solid_one(tmp_path: Path)
         v1 = float(world.object_states()["linvel"][0] @ down)
         a = (v1 - v0) / 0.4
         assert abs(a / (fraction * g_sin) - 1.0) < 0.02, (inertia, a)
+
+
+def test_a_box_on_a_removed_block_falls_and_a_removed_pinched_box_ends_its_contacts() -> None:
+    world = ch.World()
+    world.add_ground(0.0, 0.6)
+    block = world.add_box("block", [0.12, 0.07, 0.12], 0.8, [0.0, 0.035, 0.0])
+    top = world.add_box("top", [0.045] * 3, 0.06, [0.0, 0.0925, 0.0])
+    world.step(400)
+    resting = world.object_states()["position"][top, 1]
+    assert abs(resting - 0.0925) < 0.002, f"the top box rests at {resting:.4f} m"
+    world.remove_object(block)
+    world.step(600)
+    states = world.object_states()
+    assert states["present"].tolist() == [False, True]
+    assert np.isnan(states["position"][block]).all()
+    fallen = states["position"][top, 1]
+    assert abs(fallen - 0.0225) < 0.002, f"the top box is at {fallen:.4f} m, not on the ground"
+    with pytest.raises(ch.NoSuchObjectError, match="0"):
+        world.remove_object(block)  # gone already
+    # A new object gets a new id; every id still indexes its own row.
+    again = world.add_box("again", [0.03] * 3, 0.02, [0.2, 0.015, 0.0])
+    assert again == 2 and world.object_states()["present"].tolist() == [False, True, True]
+    assert world.object_names() == [None, "top", "again"]
+
+    pinched, box = pinched_world(0.03)
+    pinched.step(300)
+    assert len(pinched.contacts()["object"]) == 2
+    pinched.remove_object(box)
+    pinched.step(1)
+    assert len(pinched.contacts()["object"]) == 0
+    assert pinched.object_states()["present"].tolist() == [False]

@@ -57,4 +57,7 @@ def run() -> float:
         assert "joints" in str(e)
     world.place_object(cube, [0.0, 0.1, 0.0])
     world.set_object_locked(cube, False)
+    world.remove_object(ball)
+    names: list[Optional[str]] = world.object_names()
+    assert names == ["cube", None] and not world.object_states()["present"][ball]
     return world.time

@@ -55,6 +55,8 @@ class ObjectStates(TypedDict):
     """(n, 3) the hand contacts' total force in the last step (N), thesis Eq. 3.10."""
     sleeping: npt.NDArray[np.bool_]
     """(n,) whether rapier put it to sleep."""
+    present: npt.NDArray[np.bool_]
+    """(n,) False for a removed object, whose row is NaN."""
 
 class Contacts(TypedDict):
     """The active contacts, one row each, ordered by (object, hand, bone)."""
@@ -253,13 +255,16 @@ class World:
         rapier, nothing moved yet."""
     def step_physics(self) -> None:
         """A step's second half: rapier's step."""
-    def object_names(self) -> list[str]:
-        """The objects' names, by id."""
+    def object_names(self) -> list[Optional[str]]:
+        """The objects' names, by id (item i is object i's); a removed object's is None."""
     def object_mass(self, id: int) -> float:
         """An object's mass (kg)."""
     def object_material(self, id: int) -> dict[str, Any]:
         """An object's material: name, static_mu and dynamic_mu against skin,
         surface_friction against other objects."""
+    def remove_object(self, id: int) -> None:
+        """Removes an object: what rested on it falls, its contacts end at the next step,
+        and its id is not given again; its row of `object_states()` is then NaN."""
     def set_object_locked(self, id: int, locked: bool) -> None:
         """Holds an object fixed in place (True) or lets it move again."""
     def place_object(
