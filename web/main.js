@@ -74,6 +74,8 @@ const app = {
   granted: 0,
 };
 window.app = app;
+// Which objects' meshes are shown, by id (for the tests).
+app.shownObjects = () => drawn.objects.map((mesh) => mesh.visible);
 // With `granted`: `n` more steps, run at the next frame with the hands as posed then.
 app.grant = (n) => {
   if (!GRANTING) throw new Error('app.grant needs the page opened with ?granted');
@@ -151,12 +153,18 @@ function clearDrawn() {
 }
 
 // Meshes for the objects not drawn yet: all at first, then those a run adds (a recording's
-// object at each closing).
+// object at each closing). One removed before it was drawn gets an empty placeholder, so that
+// meshes stay indexed by id.
 function drawObjects(world) {
   const count = world.objectCount();
   if (drawn.objects.length === count) return;
   const names = world.objectNames();
+  const states = world.objectStates();
   for (let id = drawn.objects.length; id < count; id++) {
+    if (Number.isNaN(states[STATE * id])) {
+      drawn.objects.push(new THREE.Group());
+      continue;
+    }
     const mesh = new THREE.Mesh(geometry(world.objectMesh(id)), objectMaterial(materialOf(names[id])));
     mesh.name = names[id];
     root.add(mesh);
@@ -360,6 +368,9 @@ function draw(world, seconds) {
   const states = world.objectStates();
   for (let id = 0; id < drawn.objects.length; id++) {
     const s = states.subarray(STATE * id, STATE * (id + 1));
+    // A removed object's numbers are NaN: its mesh is hidden.
+    drawn.objects[id].visible = !Number.isNaN(s[0]);
+    if (!drawn.objects[id].visible) continue;
     drawn.objects[id].position.set(s[0], s[1], s[2]);
     drawn.objects[id].quaternion.set(s[3], s[4], s[5], s[6]);
   }

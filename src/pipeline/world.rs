@@ -297,6 +297,13 @@ impl InteractionWorld {
         self.objects.len()
     }
 
+    /// Every object ever added, by id (`0..object_count()`), with its
+    /// state, or `None` once removed: what a record that keeps one row
+    /// per object indexes by, so that a removal shifts no other row.
+    pub fn object_slots(&self) -> impl Iterator<Item = (ObjectId, Option<ObjectState>)> + '_ {
+        (0..self.object_count() as u32).map(|i| (ObjectId(i), self.object_state(ObjectId(i)).ok()))
+    }
+
     /// The ids of the objects in the world (not removed), in order.
     pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + '_ {
         self.objects.iter().enumerate().filter(|(_, o)| !o.removed).map(|(i, _)| ObjectId(i as u32))

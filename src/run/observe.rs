@@ -74,28 +74,43 @@ pub struct Summary {
 impl Summary {
     /// A summary from `world`'s objects as they are now.
     pub fn new(world: &InteractionWorld) -> Result<Summary, WorldError> {
-        let start = world
-            .object_ids()
-            .map(|id| world.object_state(id).map(|s| s.position))
-            .collect::<Result<Vec<_>, _>>()?;
-        let max_speed = vec![0.0; start.len()];
-        Ok(Summary { start, max_speed, contacts_begun: 0, all_finite: true })
+        let mut summary = Summary {
+            start: Vec::new(),
+            max_speed: Vec::new(),
+            contacts_begun: 0,
+            all_finite: true,
+        };
+        summary.follow_new_objects(world);
+        Ok(summary)
     }
 
-    /// Each object's summary, ending where it is in `world` now.
+    /// Follows the objects added since the last call, by id, from where
+    /// they are now (one removed before it was seen, from nowhere).
+    fn follow_new_objects(&mut self, world: &InteractionWorld) {
+        for (_, state) in world.object_slots().skip(self.start.len()) {
+            self.start.push(state.map_or(Vec3::NAN, |s| s.position));
+            self.max_speed.push(0.0);
+        }
+    }
+
+    /// Each object's summary, ending where it is in `world` now; a
+    /// removed object has none.
     pub fn objects(&self, world: &InteractionWorld) -> Result<Vec<ObjectSummary>, WorldError> {
-        let ids = world.object_ids().zip(&self.start).zip(&self.max_speed);
-        ids.map(|((id, &start), &max_speed)| {
+        let mut out = Vec::new();
+        for id in world.object_ids() {
             let end = world.object_state(id)?.position;
-            Ok(ObjectSummary {
+            let k = id.0 as usize;
+            // An object added since the last step observed starts now.
+            let start = self.start.get(k).copied().unwrap_or(end);
+            out.push(ObjectSummary {
                 name: world.object_name(id).unwrap_or("").to_string(),
                 displacement: (end - start).length(),
-                max_speed,
+                max_speed: self.max_speed.get(k).copied().unwrap_or(0.0),
                 start: start.to_array(),
                 end: end.to_array(),
-            })
-        })
-        .collect()
+            });
+        }
+        Ok(out)
     }
 }
 
@@ -105,14 +120,12 @@ impl Summary {
     /// An object added during the run is followed from where it is first
     /// seen.
     pub fn observe_world(&mut self, world: &InteractionWorld) -> Result<(), WorldError> {
-        for id in world.object_ids().skip(self.start.len()) {
-            self.start.push(world.object_state(id)?.position);
-            self.max_speed.push(0.0);
-        }
+        self.follow_new_objects(world);
         let began = world.events().iter().filter(|e| e.kind == ContactEventKind::Began);
         self.contacts_begun += began.count();
-        for (max, id) in self.max_speed.iter_mut().zip(world.object_ids()) {
+        for id in world.object_ids() {
             let s = world.object_state(id)?;
+            let max = &mut self.max_speed[id.0 as usize];
             *max = max.max(s.linvel.length());
             self.all_finite &=
                 s.position.is_finite() && s.rotation.is_finite() && s.linvel.is_finite();

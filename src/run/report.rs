@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 /// each step.
 #[derive(Debug, Clone, Default)]
 pub struct ObjectSeriesRecorder {
-    /// One series per object, in the world's object order.
+    /// One series per object, by id.
     pub objects: Vec<ObjectSeries>,
     steps: usize,
 }
@@ -29,8 +29,8 @@ pub struct ObjectSeriesRecorder {
 impl Observer for ObjectSeriesRecorder {
     fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
         let world = step.world;
-        for (k, id) in world.object_ids().enumerate() {
-            let s = world.object_state(id)?;
+        for (id, state) in world.object_slots() {
+            let k = id.0 as usize;
             if k == self.objects.len() {
                 // An object added during the run: not there before.
                 let name = world.object_name(id).unwrap_or("").to_string();
@@ -38,9 +38,10 @@ impl Observer for ObjectSeriesRecorder {
                 let (hand_force_n, height_m) = (missing.clone(), missing);
                 self.objects.push(ObjectSeries { name, hand_force_n, height_m });
             }
+            // A removed object's series goes on as NaN.
             let o = &mut self.objects[k];
-            o.hand_force_n.push(s.hand_force.length());
-            o.height_m.push(s.position.y);
+            o.hand_force_n.push(state.map_or(f32::NAN, |s| s.hand_force.length()));
+            o.height_m.push(state.map_or(f32::NAN, |s| s.position.y));
         }
         self.steps += 1;
         Ok(())

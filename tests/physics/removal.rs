@@ -6,6 +6,9 @@ use coulomb_hands::eval::grip::grip;
 use coulomb_hands::output::session::Session;
 use coulomb_hands::run::RunError;
 use coulomb_hands::run::drive::{Driver, Observer, PoseFn, StepView};
+use coulomb_hands::run::observe::Summary;
+use coulomb_hands::run::report::ObjectSeriesRecorder;
+use coulomb_hands::run::scenario::history::History;
 use coulomb_hands::run::scenario::script::smoothstep;
 use coulomb_hands::{
     ContactEventKind, InteractionConfig, InteractionWorld, Method, ObjectDesc, ObjectId, Side,
@@ -23,6 +26,10 @@ const REMOVED_AT: f64 = 1.7;
 /// What the run saw around the removal.
 #[derive(Default)]
 struct Watch {
+    /// The run's summary and its objects' series, as the CLI keeps them.
+    summary: Option<Summary>,
+    series: ObjectSeriesRecorder,
+    history: History,
     /// The held cube's contacts in the step before the removal.
     held_contacts: usize,
     /// Whether a grab baseline held it then.
@@ -88,9 +95,14 @@ fn run(method: Method) -> (InteractionWorld, [ObjectId; 4], Watch) {
         Some(grip(H, smoothstep(0.2, 0.6, t), 0.004).transformed(Vec3::ZERO, Quat::IDENTITY, lift))
     };
     let mut remover = Remover { ids: [held, lower], watch: Watch::default(), removed: false };
+    let mut summary = Summary::new(&world).unwrap();
+    let mut series = ObjectSeriesRecorder::default();
+    let mut history = History::new(&world);
     let mut driver = Driver::new(&mut world);
     driver.drive(hand, PoseFn::new(Side::Right, pose)).unwrap();
-    driver.run(3000, &mut [&mut remover]).unwrap();
+    driver.run(3000, &mut [&mut remover, &mut summary, &mut series, &mut history]).unwrap();
+    let watch = &mut remover.watch;
+    (watch.summary, watch.series, watch.history) = (Some(summary), series, history);
     let later = world.add_object(&stacked("later", 3.0)).unwrap();
     (world, [held, lower, upper, later], remover.watch)
 }
@@ -114,6 +126,25 @@ fn a_held_cube_removed_lets_go_of_the_hand_and_what_rested_on_a_removed_cube_fal
     assert_eq!((later, world.object_count()), (ObjectId(3), 4));
     assert_eq!(world.object_name(upper), Some("upper"));
     assert_eq!(world.object_name(held), None);
+    // What the run kept of each object stays with that object: the upper
+    // cube fell one cube's height, and the removed ones' series end.
+    let summary = watch.summary.expect("observed").objects(&world).unwrap();
+    let names: Vec<&str> = summary.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["upper", "later"]);
+    let fell = summary[0].start[1] - summary[0].end[1];
+    assert!((fell - STACKED).abs() < 0.002, "the upper cube's summary fell {fell} m");
+    let series = &watch.series.objects;
+    let names: Vec<&str> = series.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["held", "lower", "upper"]);
+    let last = |k: usize| *series[k].height_m.last().unwrap();
+    assert!(last(0).is_nan() && last(1).is_nan(), "removed: {} {}", last(0), last(1));
+    assert!((last(2) - resting).abs() < 0.002, "the upper cube's series ends at {}", last(2));
+    // And a scenario's history, which its checks read by name.
+    let history = &watch.history;
+    let upper_row = history.names.iter().position(|n| n == "upper").unwrap();
+    let (at, _) = history.poses.last().unwrap()[upper_row];
+    assert!((at.y - resting).abs() < 0.002, "the history's upper cube ends at {}", at.y);
+    assert!(history.poses.last().unwrap()[0].0.is_nan(), "the held cube's pose ends");
     for id in [held, lower] {
         let missing = Err(WorldError::NoSuchObject(id));
         assert_eq!(world.object_state(id).map(drop), missing);

@@ -3,7 +3,8 @@
 // right hand pinches the desk's cube, lifts it and opens. The cube must be held (lifted with
 // the hand, pressed by it), then released (no contact presses it) and fall back to the desk.
 // Screenshots of the desk page and of the immersive view are checked for the hand's skin and
-// the cube's wood. Without WebXR, or with the session refused, Enter VR says so and the page
+// the cube's wood. An object removed from the desk page's world is hidden and the others keep
+// their rows. Without WebXR, or with the session refused, Enter VR says so and the page
 // stays on the desk; Enter AR enters immersive-ar. The immersive pages step only the steps
 // the test grants (`granted`), with the hands as the test last set them, so every run is
 // the same run, whatever the browser's frame times.
@@ -105,6 +106,36 @@ try {
   const errors = await page.evaluate(() => window.app.errors);
   check(errors.length === 0, `no errors on the page (${errors})`);
   await page.close();
+  // An object removed from the page's world: its numbers go NaN, its name empty and its mesh
+  // hidden; the others keep their rows and stay where they were, and the page runs on.
+  {
+    const { page: desk } = await open(browser, server.url, '?run=desk');
+    await simulate(desk, 0.3);
+    const read = () => desk.evaluate(() => {
+      const world = window.app.world;
+      const s = world.objectStates();
+      const rows = Array.from({ length: world.objectCount() }, (_, id) =>
+        (Number.isNaN(s[17 * id]) ? null : Array.from(s.subarray(17 * id, 17 * id + 3))));
+      return { rows, names: world.objectNames(), time: world.time,
+        shown: window.app.shownObjects(), errors: window.app.errors };
+    });
+    const before = await read();
+    await desk.evaluate(() => window.app.world.removeObject(1));
+    await simulate(desk, 0.3);
+    const after = await read();
+    const again = await desk.evaluate(() => {
+      try { window.app.world.removeObject(1); return ''; } catch (e) { return String(e.message ?? e); }
+    });
+    const kept = [0, 2, 3].every((id) => after.rows[id] && after.rows[id].every(
+      (v, k) => Math.abs(v - before.rows[id][k]) < 0.001) && after.names[id] === before.names[id]);
+    check(after.rows.length === before.rows.length && after.rows[1] === null && after.names[1] === ''
+      && before.shown[1] && !after.shown[1] && after.shown[0],
+      `removed: the ${before.names[1]}'s row is NaN, its name empty, its mesh hidden`);
+    check(kept, `the other objects keep their rows and rest where they were (${JSON.stringify(after.rows)})`);
+    check(/1/.test(again), `removing it again is an error naming it (${again})`);
+    check(after.time > before.time && after.errors.length === 0, `the page runs on (${after.errors})`);
+    await desk.close();
+  }
   // Enter AR: the same desk and hands over the room, its backdrop and ground not drawn.
   {
     const { page: ar } = await open(browser, server.url, '?run=desk&granted');

@@ -97,10 +97,15 @@ pub fn pose_from(values: &[f32]) -> Result<HandPose, Error> {
     Ok(HandPose { palm, fingers })
 }
 
-/// States' [`STATE`] numbers, one after another.
-pub fn states<'a>(states: impl Iterator<Item = &'a ObjectState>) -> Vec<f32> {
+/// States' [`STATE`] numbers, one after another; a removed object's
+/// (`None`) are NaN.
+pub fn states(states: impl Iterator<Item = Option<ObjectState>>) -> Vec<f32> {
     let mut out = Vec::new();
-    for s in states {
+    for state in states {
+        let Some(s) = state else {
+            out.extend([f32::NAN; STATE]);
+            continue;
+        };
         out.extend(s.position.to_array());
         out.extend(s.rotation.to_array());
         out.extend(s.linvel.to_array());

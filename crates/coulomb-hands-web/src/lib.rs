@@ -322,26 +322,34 @@ impl World {
         js(self.sim.place_object(id, position, rotation))
     }
 
-    /// How many objects there are; their ids are 0 to this.
+    /// Removes an object: what rested on it falls, its contacts end at the
+    /// next step, and its id is not given again; its row of
+    /// `objectStates()` is then NaN and its name empty.
+    #[wasm_bindgen(js_name = removeObject)]
+    pub fn remove_object(&mut self, id: u32) -> Result<(), JsError> {
+        js(self.sim.remove_object(id))
+    }
+
+    /// How many objects were added, removed ones included; their ids are
+    /// 0 to this.
     #[wasm_bindgen(js_name = objectCount)]
     pub fn object_count(&self) -> usize {
         self.sim.world().object_count()
     }
 
-    /// The objects' names, by id.
+    /// The objects' names, by id; a removed object's is empty.
     #[wasm_bindgen(js_name = objectNames)]
     pub fn object_names(&self) -> Vec<String> {
         let world = self.sim.world();
-        world.object_ids().map(|id| world.object_name(id).unwrap_or_default().to_string()).collect()
+        let name = |(id, _)| world.object_name(id).unwrap_or_default().to_string();
+        world.object_slots().map(name).collect()
     }
 
-    /// Every object's state, by id, `stateStride()` numbers each.
+    /// Every object's state, by id, `stateStride()` numbers each; a
+    /// removed object's are NaN.
     #[wasm_bindgen(js_name = objectStates)]
-    pub fn object_states(&self) -> Result<Vec<f32>, JsError> {
-        let world = self.sim.world();
-        let states = world.object_ids().map(|id| world.object_state(id));
-        let states = js(states.collect::<Result<Vec<_>, _>>().map_err(|e| e.to_string()))?;
-        Ok(arrays::states(states.iter()))
+    pub fn object_states(&self) -> Vec<f32> {
+        arrays::states(self.sim.world().object_slots().map(|(_, state)| state))
     }
 
     /// An object's triangles in its own frame (9 numbers each).

@@ -428,6 +428,12 @@ impl Sim {
         Ok((first..self.world().object_count() as u32).collect())
     }
 
+    /// Removes an object: what rested on it falls, its contacts end at the
+    /// next step, and its id is not given again.
+    pub fn remove_object(&mut self, id: u32) -> Result<(), Error> {
+        text(self.world_mut().remove_object(ObjectId(id)))
+    }
+
     /// Puts an object at `position` and `rotation` (x, y, z, w, or empty),
     /// at rest.
     pub fn place_object(
@@ -460,11 +466,9 @@ pub fn trace(sim: &mut Sim, every: usize) -> Result<Vec<String>, Error> {
     loop {
         let run = sim.step(every - sim.steps() % every)?;
         let world = sim.world();
-        let states: Result<Vec<_>, _> =
-            world.object_ids().map(|id| world.object_state(id)).collect();
-        let states = text(states)?;
+        let states = arrays::states(world.object_slots().map(|(_, state)| state));
         let contacts = arrays::contacts(world.contacts());
-        rows.push(format!("{}|{}", hex(&arrays::states(states.iter())), hex(&contacts)));
+        rows.push(format!("{}|{}", hex(&states), hex(&contacts)));
         if run == 0 || sim.finished() {
             return Ok(rows);
         }

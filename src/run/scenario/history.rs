@@ -10,9 +10,9 @@ use glam::{Quat, Vec3};
 pub struct History {
     /// Physics step (s).
     pub dt: f32,
-    /// Object names, in object order.
+    /// Object names, by id (a removed object's stays).
     pub names: Vec<String>,
-    /// `poses[step][object]` after that step.
+    /// `poses[step][object]` after that step, by id (NaN once removed).
     pub poses: Vec<Vec<(Vec3, Quat)>>,
     /// `velocities[step][object]`: linear velocity after that step (m/s).
     pub velocities: Vec<Vec<Vec3>>,
@@ -31,9 +31,19 @@ pub struct History {
 impl History {
     /// An empty history of `world`'s objects.
     pub fn new(world: &InteractionWorld) -> History {
-        let names = world.object_ids().map(|id| world.object_name(id).unwrap_or("").to_string());
         let (dt, gravity) = (world.config().dt, world.config().gravity);
-        History { dt, gravity, names: names.collect(), ..History::default() }
+        let mut history = History { dt, gravity, ..History::default() };
+        history.name_new_objects(world);
+        history
+    }
+
+    /// Names the objects added since the last call, by id; one removed
+    /// before it was seen is nameless.
+    fn name_new_objects(&mut self, world: &InteractionWorld) {
+        for i in self.names.len()..world.object_count() {
+            let name = world.object_name(crate::scene::ObjectId(i as u32)).unwrap_or("");
+            self.names.push(name.to_string());
+        }
     }
 
     /// The step whose state is the one at time `t` (clamped to the run).
@@ -53,15 +63,16 @@ impl History {
 impl Observer for History {
     fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
         let world = step.world;
+        self.name_new_objects(world);
         let objects = world.object_count();
         let mut poses = Vec::with_capacity(objects);
         let mut velocities = Vec::with_capacity(objects);
         let mut hand_forces = Vec::with_capacity(objects);
-        for id in world.object_ids() {
-            let s = world.object_state(id)?;
-            poses.push((s.position, s.rotation));
-            velocities.push(s.linvel);
-            hand_forces.push(s.hand_force);
+        let gone = (Vec3::NAN, Quat::from_xyzw(f32::NAN, f32::NAN, f32::NAN, f32::NAN));
+        for (_, state) in world.object_slots() {
+            poses.push(state.map_or(gone, |s| (s.position, s.rotation)));
+            velocities.push(state.map_or(Vec3::NAN, |s| s.linvel));
+            hand_forces.push(state.map_or(Vec3::NAN, |s| s.hand_force));
         }
         let mut contacts = vec![0u32; objects];
         for c in world.contacts().iter().filter(|c| c.normal_force > 0.0) {
