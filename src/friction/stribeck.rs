@@ -9,9 +9,9 @@
 //! so each light contact that reaches its cone first creeps by a fraction
 //! of a millimetre, drops to μ_dyn, and hands its load on; the next follows,
 //! and the object slides before its slope reaches atan μ_st (the book's
-//! "Static friction that fades with speed"). Measured skin friction does not drop at the first
-//! micro-slip: it falls from its static to its kinetic value over the
-//! sliding speed, as friction does in the mixed-lubrication regime that
+//! "Static friction that fades with speed"). Measured skin friction does
+//! not drop at the first micro-slip: it falls from its static to its
+//! kinetic value over the sliding speed, as friction does in the mixed-lubrication regime that
 //! the finger pad works in (Pasumarty et al. 2011, "Friction of the human
 //! finger pad: influence of moisture, occlusion and velocity", Tribol.
 //! Lett. 44:117). The exponential form is the common one (Olsson et al.

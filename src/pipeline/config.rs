@@ -141,11 +141,14 @@ pub struct InteractionConfig {
     /// speed (m/s), as measured skin friction does
     /// ([`crate::friction::stribeck`]): skin that creeps holds with μ_st,
     /// skin that slides a few times faster than this with μ_dyn. The
-    /// default, 5 mm/s, is the middle of the Stribeck speeds friction
-    /// models use (1–10 mm/s; Olsson et al. 1998), far above the creep of
-    /// a contact under an object that stays put and far below the tracked
-    /// hand's jitter. `None` drops a contact to μ_dyn the instant it leaves
-    /// the cone, as in the thesis.
+    /// default, 30 mm/s, lies in the band (20–50 mm/s) in which every
+    /// tested plate on a flat hand starts to slide within 0.5° of atan μ_st:
+    /// far above the creep of a contact under an object that stays put,
+    /// below the centimetres a second of a real slide and the tracked
+    /// hand's jitter. Slower, the falling friction outweighs the pads'
+    /// dampers and a nudged plate stick-slips (the book's "Static friction
+    /// that fades with speed"). `None` drops a contact to μ_dyn the instant
+    /// it leaves the cone, as in the thesis.
     pub stribeck_speed: Option<f32>,
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.

@@ -36,6 +36,19 @@ pub struct ObjectState {
     pub sleeping: bool,
 }
 
+impl ObjectState {
+    /// What a record that keeps a row per object id holds for a removed
+    /// object: every number NaN, not sleeping.
+    pub const REMOVED: ObjectState = ObjectState {
+        position: Vec3::NAN,
+        rotation: Quat::from_xyzw(f32::NAN, f32::NAN, f32::NAN, f32::NAN),
+        linvel: Vec3::NAN,
+        angvel: Vec3::NAN,
+        hand_force: Vec3::NAN,
+        sleeping: false,
+    };
+}
+
 impl InteractionWorld {
     /// An empty world.
     pub fn new(config: InteractionConfig) -> Result<Self, WorldError> {

@@ -387,9 +387,8 @@ impl World {
     /// The objects' names, by id (item i is object i's); a removed
     /// object's is None.
     fn object_names(&self) -> Vec<Option<String>> {
-        let rows = self.world.object_count();
-        let name = |i: usize| self.world.object_name(ObjectId(i as u32)).map(String::from);
-        (0..rows).map(name).collect()
+        let name = |(id, _)| self.world.object_name(id).map(String::from);
+        self.world.object_slots().map(name).collect()
     }
 
     /// An object's mass (kg).
@@ -444,20 +443,10 @@ impl World {
     /// Eq. 3.10), `sleeping` (n,), and `present` (n,): False for a removed
     /// object, whose row is NaN (and not sleeping).
     fn object_states<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let rows = self.world.object_count();
-        let gone = ObjectState {
-            position: Vec3::NAN,
-            rotation: Quat::from_xyzw(f32::NAN, f32::NAN, f32::NAN, f32::NAN),
-            linvel: Vec3::NAN,
-            angvel: Vec3::NAN,
-            hand_force: Vec3::NAN,
-            sleeping: false,
-        };
-        let (mut states, mut present) = (vec![gone; rows], vec![false; rows]);
-        for id in self.world.object_ids() {
-            states[id.0 as usize] = self.world.object_state(id).map_err(world_error)?;
-            present[id.0 as usize] = true;
-        }
+        let slots: Vec<Option<ObjectState>> = self.world.object_slots().map(|(_, s)| s).collect();
+        let states: Vec<ObjectState> =
+            slots.iter().map(|s| s.unwrap_or(ObjectState::REMOVED)).collect();
+        let present = slots.iter().map(Option::is_some);
         let dict = PyDict::new(py);
         dict.set_item("position", points_array(py, states.iter().map(|s| s.position))?)?;
         dict.set_item("rotation", quats_array(py, states.iter().map(|s| s.rotation))?)?;
@@ -465,7 +454,7 @@ impl World {
         dict.set_item("angvel", points_array(py, states.iter().map(|s| s.angvel))?)?;
         dict.set_item("hand_force", points_array(py, states.iter().map(|s| s.hand_force))?)?;
         dict.set_item("sleeping", values_array(py, states.iter().map(|s| s.sleeping)))?;
-        dict.set_item("present", values_array(py, present.into_iter()))?;
+        dict.set_item("present", values_array(py, present))?;
         Ok(dict)
     }
 

@@ -1,6 +1,6 @@
 //! What a scenario run recorded, step by step, for its checks.
 
-use crate::pipeline::InteractionWorld;
+use crate::pipeline::{InteractionWorld, ObjectState};
 use crate::run::RunError;
 use crate::run::drive::{Observer, StepView};
 use glam::{Quat, Vec3};
@@ -40,9 +40,8 @@ impl History {
     /// Names the objects added since the last call, by id; one removed
     /// before it was seen is nameless.
     fn name_new_objects(&mut self, world: &InteractionWorld) {
-        for i in self.names.len()..world.object_count() {
-            let name = world.object_name(crate::scene::ObjectId(i as u32)).unwrap_or("");
-            self.names.push(name.to_string());
+        for (id, _) in world.object_slots().skip(self.names.len()) {
+            self.names.push(world.object_name(id).unwrap_or("").to_string());
         }
     }
 
@@ -68,11 +67,11 @@ impl Observer for History {
         let mut poses = Vec::with_capacity(objects);
         let mut velocities = Vec::with_capacity(objects);
         let mut hand_forces = Vec::with_capacity(objects);
-        let gone = (Vec3::NAN, Quat::from_xyzw(f32::NAN, f32::NAN, f32::NAN, f32::NAN));
         for (_, state) in world.object_slots() {
-            poses.push(state.map_or(gone, |s| (s.position, s.rotation)));
-            velocities.push(state.map_or(Vec3::NAN, |s| s.linvel));
-            hand_forces.push(state.map_or(Vec3::NAN, |s| s.hand_force));
+            let s = state.unwrap_or(ObjectState::REMOVED);
+            poses.push((s.position, s.rotation));
+            velocities.push(s.linvel);
+            hand_forces.push(s.hand_force);
         }
         let mut contacts = vec![0u32; objects];
         for c in world.contacts().iter().filter(|c| c.normal_force > 0.0) {
