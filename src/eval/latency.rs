@@ -14,7 +14,15 @@
 //!   gain;
 //! * **grip step** and **grip sine**: the hand closes from open at once, or
 //!   opens and closes at 1 Hz; the same, of the index fingertip along its
-//!   path.
+//!   path;
+//! * **hand reach** and **grip reach**: the whole hand moves [`STEP`]
+//!   sideways, or the grip closes from open, in [`REACH`] along a
+//!   minimum-jerk path (Flash & Hogan 1985, "The coordination of arm
+//!   movements", J. Neuroscience 5(7)), the smoothest a hand makes; the time
+//!   the acting point reaches half the move after the tracked one does.
+//!
+//! A step is a jump no hand makes, which a filter that tells glitches from
+//! motion may rightly hold back; the reaches are what a quick hand does.
 //!
 //! Under noise, the acting hands of many noise streams are averaged, so
 //! the noise averages out of what is measured and the lag stays.
@@ -37,6 +45,10 @@ pub const SETTLE: f64 = 3.0;
 pub const STEP: f32 = 0.05;
 /// How far the hand swings each way (m).
 pub const SWING: f32 = 0.05;
+/// How long a reach takes (s): 5 cm in 150 ms peaks at 0.63 m/s and
+/// 12.8 m/s², a quick hand's (real hands' gross accelerations in the
+/// leapjs-playback recordings reach about 21 m/s²).
+pub const REACH: f64 = 0.15;
 /// How long the sines run (s); their first period is left out.
 const SINE_FOR: f64 = 4.0;
 /// The sine's frequency (Hz).
@@ -57,12 +69,22 @@ pub enum Motion {
     GripStep,
     /// The hand opens and closes at 1 Hz.
     GripSine,
+    /// The whole hand moves sideways along a minimum-jerk path.
+    HandReach,
+    /// The hand closes along a minimum-jerk path.
+    GripReach,
 }
 
 impl Motion {
-    /// All four, in the order reports list them.
-    pub const ALL: [Motion; 4] =
-        [Motion::HandStep, Motion::HandSine, Motion::GripStep, Motion::GripSine];
+    /// All six, in the order reports list them.
+    pub const ALL: [Motion; 6] = [
+        Motion::HandStep,
+        Motion::HandSine,
+        Motion::HandReach,
+        Motion::GripStep,
+        Motion::GripSine,
+        Motion::GripReach,
+    ];
 
     /// Its name in reports.
     pub fn name(self) -> &'static str {
@@ -71,6 +93,8 @@ impl Motion {
             Motion::HandSine => "hand sine",
             Motion::GripStep => "grip step",
             Motion::GripSine => "grip sine",
+            Motion::HandReach => "hand reach",
+            Motion::GripReach => "grip reach",
         }
     }
 
@@ -82,6 +106,7 @@ impl Motion {
     fn pose(self, t: f64) -> HandPose {
         let moving = t - SETTLE;
         let sine = (std::f64::consts::TAU * SINE_HZ * moving.max(0.0)).sin() as f32;
+        let reach = minimum_jerk(moving / REACH);
         let (shift, closure) = match self {
             Motion::HandStep => (if moving >= 0.0 { STEP } else { 0.0 }, 1.0),
             Motion::HandSine => (SWING * sine, 1.0),
@@ -89,6 +114,8 @@ impl Motion {
             Motion::GripSine => {
                 (0.0, 0.5 - 0.5 * (std::f64::consts::TAU * SINE_HZ * moving.max(0.0)).cos() as f32)
             }
+            Motion::HandReach => (STEP * reach, 1.0),
+            Motion::GripReach => (0.0, reach),
         };
         let (half, squeeze) = GRIP;
         grip(half, closure, squeeze).transformed(Vec3::ZERO, Quat::IDENTITY, AT + Vec3::X * shift)
@@ -97,8 +124,8 @@ impl Motion {
     /// The point measured, and the direction along which it is measured.
     fn measure(self, pose: &HandPose) -> Vec3 {
         match self {
-            Motion::HandStep | Motion::HandSine => pose.palm.center,
-            Motion::GripStep | Motion::GripSine => pose.fingers[1][2].b,
+            Motion::HandStep | Motion::HandSine | Motion::HandReach => pose.palm.center,
+            Motion::GripStep | Motion::GripSine | Motion::GripReach => pose.fingers[1][2].b,
         }
     }
 }
@@ -188,7 +215,7 @@ fn mean_paths(
     let end = match motion {
         Motion::HandSine => start + Vec3::X,
         Motion::GripSine => motion.measure(&motion.pose(SETTLE + 0.5 / SINE_HZ)),
-        _ => motion.measure(&motion.pose(SETTLE)),
+        _ => motion.measure(&motion.pose(SETTLE + REACH)),
     };
     let along = (end - start).normalize_or_zero();
     let reading = |p: Vec3| f64::from((p - start).dot(along));
@@ -213,13 +240,24 @@ fn mean_paths(
     Ok((tracked, acting))
 }
 
-/// The time (s) from the step until the acting path has covered half of
-/// the tracked one's step.
+/// The time (s) from when the tracked path has covered half of its move
+/// (at once, for a step) until the acting path has.
 fn half_time(tracked: &[f64], acting: &[f64], dt: f32) -> f64 {
     let begin = (SETTLE / f64::from(dt)).round() as usize;
     let half = 0.5 * tracked.last().copied().unwrap_or(0.0);
-    let reached = acting[begin..].iter().position(|&x| (x - half) * half.signum() >= 0.0);
-    reached.map_or(f64::INFINITY, |k| k as f64 * f64::from(dt))
+    let reached =
+        |path: &[f64]| path[begin..].iter().position(|&x| (x - half) * half.signum() >= 0.0);
+    match (reached(tracked), reached(acting)) {
+        (Some(from), Some(to)) => (to as f64 - from as f64) * f64::from(dt),
+        _ => f64::INFINITY,
+    }
+}
+
+/// The minimum-jerk path's share of its move at `tau`, the share of its
+/// time gone (clamped to [0, 1]): 10τ³ − 15τ⁴ + 6τ⁵ (Flash & Hogan 1985).
+fn minimum_jerk(tau: f64) -> f32 {
+    let tau = tau.clamp(0.0, 1.0);
+    (tau.powi(3) * (10.0 - 15.0 * tau + 6.0 * tau * tau)) as f32
 }
 
 /// The delay (s) of the acting path's 1 Hz component behind the tracked

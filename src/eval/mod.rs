@@ -18,6 +18,7 @@
 
 pub mod ablation;
 pub mod board;
+pub mod glitch;
 pub mod grip;
 pub mod latency;
 pub mod noise;

@@ -294,7 +294,7 @@ fn the_sweep_and_the_ablation_come_from_their_files() {
     // Only the accuracy study and the bench are absent; the sweep has a
     // plot (one strategy) and a row per noise strength.
     assert_eq!(page.matches("class=\"absent\"").count(), 2);
-    for noise in ["×0 (0.00 mm)", "×1 (0.72 mm)"] {
+    for noise in ["×0 (0.00 mm)", "×1 (0.70 mm)"] {
         let row = format!("<tr><td>kinematic</td><td>lift</td><td class=\"num\">{noise}</td>");
         assert!(page.contains(&row), "no sweep row for noise {noise}");
     }

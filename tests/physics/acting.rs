@@ -112,10 +112,14 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
     assert!(clean.sagged < 0.001 && clean.off < 0.001, "clean: {clean:?}");
     let through_filter = runs().iter().filter(|(acting, _)| acting.sagged > 0.02).count();
     let as_tracked = runs().iter().filter(|(_, tracked)| tracked.sagged > 0.02).count();
-    // About half the raw holds drop (the book's "Tracking noise": 19 of 40
-    // at 2 mm); through the filter, the rare drop follows a glitch.
+    // A third of the raw holds drop (5 of 16 since the noise's track edges
+    // were cut out, 2026-12-06; the book's "Tracking noise"); through the
+    // filter, the rare drop follows a glitch.
     assert!(through_filter <= 2, "{through_filter} of {STREAMS} dropped through the filter");
-    assert!(as_tracked >= 6, "the raw tracked hand dropped only {as_tracked} of {STREAMS}");
+    assert!(
+        as_tracked >= 4 && as_tracked >= through_filter + 3,
+        "the raw tracked hand dropped {as_tracked} of {STREAMS}, the filtered {through_filter}"
+    );
 }
 
 #[test]
@@ -221,5 +225,5 @@ fn the_filter_adds_no_lag_to_a_clean_hand_and_at_most_15_ms_to_a_moving_noisy_on
             assert!(row.latency_ms <= 15.0, "{row:?}");
         }
     }
-    assert_eq!(study.rows.len(), 8);
+    assert_eq!(study.rows.len(), 12);
 }

@@ -12,8 +12,9 @@ use std::sync::LazyLock;
 /// The default noise strengths, as `--noise-mm` takes them.
 static NOISE_MM: LazyLock<String> = LazyLock::new(|| comma_list(&LatencyOptions::NOISE_MM));
 
-/// How far the hand that acts lags the tracked hand under the tracking filter: on a step
-/// and on a 1 Hz sine, of the whole hand and of its grip, clean and under tracking noise.
+/// How far the hand that acts lags the tracked hand under the tracking filter: on a step,
+/// a 1 Hz sine and a minimum-jerk reach, of the whole hand and of its grip, clean and under
+/// tracking noise.
 #[derive(clap::Args)]
 pub struct LatencyArgs {
     /// Tracking noise strengths by their rms per joint and axis, comma-separated (0: a
@@ -73,7 +74,8 @@ fn print_latency(s: &LatencyStudy) {
         );
     }
     println!(
-        "(step: until the acting hand covered half the step; sine: the delay of its 1 Hz \
+        "(step: until the acting hand covered half the step; reach: until it covered half a \
+         minimum-jerk move of 150 ms after the tracked hand did; sine: the delay of its 1 Hz \
          component; hand: the palm's centre, 5 cm; grip: the index fingertip)"
     );
 }

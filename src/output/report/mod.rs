@@ -18,6 +18,7 @@
 mod markup;
 mod page;
 mod plots;
+pub(crate) use plots::quantile;
 mod study;
 mod study_page;
 #[cfg(test)]

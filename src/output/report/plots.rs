@@ -83,8 +83,9 @@ fn log_span(values: &[f64]) -> std::ops::Range<f64> {
     if hi > 0.0 { decade((lo / 1.2).max(hi * 1e-5))..hi * 1.6 } else { 1.0..1000.0 }
 }
 
-/// The `p`-quantile (0..=1) of sorted `s`, linearly interpolated.
-fn quantile(s: &[f64], p: f64) -> f64 {
+/// The `p`-quantile (0..=1) of sorted `s`, linearly interpolated; NaN
+/// if `s` is empty.
+pub(crate) fn quantile(s: &[f64], p: f64) -> f64 {
     let rank = p * (s.len().saturating_sub(1)) as f64;
     let (i, frac) = (rank.floor() as usize, rank.fract());
     let lo = s.get(i).copied().unwrap_or(f64::NAN);

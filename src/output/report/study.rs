@@ -179,7 +179,7 @@ pub struct LatencyStudy {
 /// One motion at one noise strength.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LatencyRow {
-    /// `hand step`, `hand sine`, `grip step` or `grip sine`.
+    /// `hand step`, `hand sine`, `hand reach`, `grip step`, `grip sine` or `grip reach`.
     pub motion: String,
     /// The noise strength, times the recordings'.
     pub noise: f32,
