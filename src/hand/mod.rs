@@ -272,12 +272,14 @@ pub struct HandSample {
     pub grab: Option<f32>,
     /// The tracker's pinch strength, if any.
     pub pinch: Option<f32>,
+    /// The tracker's confidence in the pose, in [0, 1], if it reports one.
+    pub confidence: Option<f32>,
 }
 
 impl HandSample {
     /// A pose without tracker strengths (a scripted or synthetic hand).
     pub fn from_pose(pose: HandPose) -> HandSample {
-        HandSample { pose, grab: None, pinch: None }
+        HandSample { pose, grab: None, pinch: None, confidence: None }
     }
 }
 

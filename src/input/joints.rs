@@ -34,7 +34,9 @@
 //!     for WebXR and MediaPipe;
 //!   * `id` (optional): the tracker's id for the hand, stable while it is
 //!     tracked (default 0 for the left hand, 1 for the right);
-//!   * `grab`, `pinch` (optional): the tracker's strengths in \[0, 1\].
+//!   * `grab`, `pinch` (optional): the tracker's strengths in \[0, 1\];
+//!   * `confidence` (optional): the tracker's confidence in the hand's
+//!     pose, in \[0, 1\] (a Leap Motion's per-hand `confidence`).
 //!
 //! **Frame.** Positions are metres in a right-handed frame with y up (the
 //! world's, rapier's): OpenXR and WebXR poses in their reference space are
@@ -239,7 +241,8 @@ fn frame(place: &Place, v: &Value) -> Result<TrackingFrame, InputError> {
 fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, InputError> {
     let at = |field: &str| format!("{path}.{field}");
     let o = object(place, path, v)?;
-    let keys = ["side", "layout", "joints", "radii", "orientations", "id", "grab", "pinch"];
+    let keys =
+        ["side", "layout", "joints", "radii", "orientations", "id", "grab", "pinch", "confidence"];
     known_keys(place, path, o, &keys)?;
     let side = o.get("side").and_then(Value::as_str).and_then(|s| s.parse::<Side>().ok());
     let side = side.ok_or_else(|| {
@@ -279,7 +282,8 @@ fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, Inp
         }
         Ok(Some(x as f32))
     };
-    let (grab, pinch) = (strength("grab")?, strength("pinch")?);
+    let (grab, pinch, confidence) =
+        (strength("grab")?, strength("pinch")?, strength("confidence")?);
     if layout == Layout::MediaPipe
         && let Some(key) = ["radii", "orientations"].into_iter().find(|k| o.contains_key(*k))
     {
@@ -297,7 +301,7 @@ fn tracked_hand(place: &Place, path: &str, v: &Value) -> Result<TrackedHand, Inp
     );
     let hand =
         hand.map_err(|e: LayoutError| place.err(format!("{path}.joints[{}]", e.joint), e.reason))?;
-    Ok(TrackedHand { grab, pinch, ..hand })
+    Ok(TrackedHand { grab, pinch, confidence, ..hand })
 }
 
 fn radii(place: &Place, path: &str, v: &Value, count: usize) -> Result<Vec<f32>, InputError> {
@@ -385,7 +389,9 @@ pub fn openxr_line(t: f64, hands: &[TrackedHand]) -> String {
                 "orientations":
                     joints.iter().map(|j| j.orientation.to_array().map(round)).collect::<Vec<_>>(),
             });
-            for (key, s) in [("grab", hand.grab), ("pinch", hand.pinch)] {
+            let values =
+                [("grab", hand.grab), ("pinch", hand.pinch), ("confidence", hand.confidence)];
+            for (key, s) in values {
                 if let Some(s) = s {
                     o[key] = round(s);
                 }

@@ -327,6 +327,7 @@ fn tracked(
         widths,
         grab: None,
         pinch: None,
+        confidence: None,
     }
 }
 

@@ -224,9 +224,9 @@ fn unit(source: &str, index: usize, path: &str, v: Option<&Value>) -> Result<Vec
         .ok_or_else(|| err(source, Some(index), path, "zero-length direction"))
 }
 
-/// A grab or pinch strength: absent or null when the tracker gives none,
-/// else a number in [0, 1] (Leap's scale); anything else is refused, since
-/// the replay finds closings from it.
+/// A grab or pinch strength, or a confidence: absent or null when the
+/// tracker gives none, else a number in [0, 1] (Leap's scale); anything
+/// else is refused, since the replay finds closings from the strengths.
 fn strength(
     source: &str,
     index: usize,
@@ -351,6 +351,7 @@ pub(crate) fn frame(source: &str, index: usize, f: &Value) -> Result<TrackingFra
             widths,
             grab: strength(source, index, &path("grabStrength"), hand.get("grabStrength"))?,
             pinch: strength(source, index, &path("pinchStrength"), hand.get("pinchStrength"))?,
+            confidence: strength(source, index, &path("confidence"), hand.get("confidence"))?,
         });
     }
     Ok(TrackingFrame { timestamp_us: timestamp, hands })
@@ -414,6 +415,23 @@ mod tests {
         none["frames"][0]["hands"][0].as_object_mut().unwrap().remove("pinchStrength");
         let hand = &from_json("rec.json", &none).unwrap().frames[0].hands[0];
         assert_eq!((hand.grab, hand.pinch), (None, None));
+    }
+
+    /// A Leap's per-hand confidence comes in as it is recorded; outside
+    /// [0, 1] it is an error naming the file, the frame and the field.
+    #[test]
+    fn the_hands_confidence_is_read_and_checked() {
+        let mut rec = recording(1.0);
+        rec["frames"][0]["hands"][0]["confidence"] = serde_json::json!(0.17);
+        let hand = &from_json("rec.json", &rec).unwrap().frames[0].hands[0];
+        assert_eq!(hand.confidence, Some(0.17));
+        assert_eq!(
+            from_json("rec.json", &recording(1.0)).unwrap().frames[0].hands[0].confidence,
+            None
+        );
+        rec["frames"][0]["hands"][0]["confidence"] = serde_json::json!(1.02);
+        let e = from_json("rec.json", &rec).unwrap_err().to_string();
+        assert_eq!(e, "rec.json: frame 0: hands[0].confidence: must be in [0, 1], got 1.02");
     }
 
     #[test]

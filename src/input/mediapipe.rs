@@ -37,6 +37,11 @@ pub struct HandLandmarks {
     pub landmarks: Option<[Vec3; mediapipe::COUNT]>,
     /// World landmarks (m), MediaPipe's axes (y down).
     pub world_landmarks: Option<[Vec3; mediapipe::COUNT]>,
+    /// The least `visibility` or `presence` of any landmark, when the
+    /// file gives them: how sure the tracker is of the hand's least seen
+    /// joint, in [0, 1] (MediaPipe's likelihoods that a landmark is
+    /// unoccluded and in the image).
+    pub confidence: Option<f32>,
 }
 
 /// What a file's handedness label means.
@@ -78,8 +83,9 @@ impl HandLandmarks {
         };
         let up: Conversion = layouts::mediapipe_to_y_up();
         let landmarks = world.map(|p| up.point(p));
-        layouts::from_mediapipe(id, side, &landmarks)
-            .map_err(|e| fail(&format!("world_landmarks.landmark[{}]", e.joint), e.reason))
+        let hand = layouts::from_mediapipe(id, side, &landmarks)
+            .map_err(|e| fail(&format!("world_landmarks.landmark[{}]", e.joint), e.reason))?;
+        Ok(TrackedHand { confidence: self.confidence, ..hand })
     }
 }
 
@@ -166,7 +172,12 @@ pub fn parse(source: &str, text: &str) -> Result<HandLandmarks, InputError> {
         Node::Message(f) => f.clone(),
         Node::Scalar(_) => Vec::new(),
     };
-    let mut out = HandLandmarks { handedness: None, landmarks: None, world_landmarks: None };
+    let mut out = HandLandmarks {
+        handedness: None,
+        landmarks: None,
+        world_landmarks: None,
+        confidence: None,
+    };
     for (name, line, node) in &fields {
         match name.as_str() {
             "classifications" => {
@@ -197,6 +208,16 @@ pub fn parse(source: &str, text: &str) -> Result<HandLandmarks, InputError> {
                                 fail(at(axis), why)
                             })
                         };
+                        for key in ["visibility", "presence"] {
+                            if children(&l).iter().any(|f| f.0 == key) {
+                                let p = axis(key)?;
+                                if !(0.0..=1.0).contains(&p) {
+                                    let why = format!("must be in [0, 1], got {p} (line {line})");
+                                    return Err(fail(at(key), why));
+                                }
+                                out.confidence = Some(out.confidence.map_or(p, |c| c.min(p)));
+                            }
+                        }
                         Ok(Vec3::new(axis("x")?, axis("y")?, axis("z")?))
                     })
                     .collect::<Result<Vec<_>, _>>()?;
@@ -233,12 +254,28 @@ mod tests {
         let h = parse("t.pbtxt", &text).unwrap();
         assert_eq!(h.handedness, Some(Side::Right));
         assert_eq!(h.world_landmarks.unwrap()[20], Vec3::new(1.0, 2.5, -0.03));
-        assert!(h.landmarks.is_none());
+        assert!(h.landmarks.is_none() && h.confidence.is_none());
         let e = parse("t.pbtxt", "world_landmarks { landmark { x: 1 y: 2 } }").unwrap_err();
         assert_eq!(e.to_string(), "t.pbtxt: world_landmarks.landmark[0].z: missing (line 1)");
         let e = parse("t.pbtxt", "landmarks {\n landmark { x: nan y: 0 z: 0 }\n}").unwrap_err();
         assert_eq!(e.field, "landmarks.landmark[0].x");
         assert!(parse("t.pbtxt", "landmarks { landmark {").is_err());
         assert!(parse("t.pbtxt", "}").is_err());
+    }
+
+    /// Landmarks' visibility and presence come in as the hand's least;
+    /// out of [0, 1], they are an error naming the landmark.
+    #[test]
+    fn the_least_visibility_or_presence_is_the_hands_confidence() {
+        let seen = "landmark { x: 0 y: 0 z: 0 visibility: 0.9 presence: 0.97 }\n";
+        let hidden = "landmark { x: 0 y: 0 z: 0 visibility: 0.35 }\n";
+        let text = format!("landmarks {{\n{}{}}}\n", seen.repeat(20), hidden);
+        assert_eq!(parse("t.pbtxt", &text).unwrap().confidence, Some(0.35));
+        let text = "landmarks { landmark { x: 0 y: 0 z: 0 presence: 1.4 } }";
+        let e = parse("t.pbtxt", text).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "t.pbtxt: landmarks.landmark[0].presence: must be in [0, 1], got 1.4 (line 1)"
+        );
     }
 }

@@ -43,9 +43,24 @@ pub struct TrackedHand {
     pub grab: Option<f32>,
     /// The tracker's pinch strength in [0, 1], when it reports one.
     pub pinch: Option<f32>,
+    /// The tracker's confidence in this hand's pose, in [0, 1], when it
+    /// reports one: a Leap Motion's per-hand `confidence`, or the least
+    /// visibility of MediaPipe's landmarks.
+    pub confidence: Option<f32>,
 }
 
 impl TrackedHand {
+    /// `pose`, this hand's skeleton, with what the tracker says of it: its
+    /// grab and pinch strengths and its confidence.
+    pub fn sample(&self, pose: crate::hand::HandPose) -> crate::hand::HandSample {
+        crate::hand::HandSample {
+            pose,
+            grab: self.grab,
+            pinch: self.pinch,
+            confidence: self.confidence,
+        }
+    }
+
     /// The same hand in another frame and unit (e.g. Leap millimetres to
     /// world metres).
     pub fn converted(&self, c: &convert::Conversion) -> TrackedHand {

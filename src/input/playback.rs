@@ -154,7 +154,7 @@ impl Playback {
                     tracks.push(Track { id: hand.id, side: hand.side, samples: Vec::new() });
                     tracks.len() - 1
                 });
-                let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
+                let sample = hand.sample(pose);
                 tracks[k].samples.push((t, sample));
             }
         }
@@ -208,5 +208,6 @@ pub fn interpolate(samples: &[(f64, HandSample)], t: f64, grace: f64) -> Option<
         pose: s0.pose.lerp(&s1.pose, w),
         grab: mix(s0.grab, s1.grab),
         pinch: mix(s0.pinch, s1.pinch),
+        confidence: mix(s0.confidence, s1.confidence),
     })
 }

@@ -94,6 +94,7 @@ mod tests {
             widths: [18.0; 5],
             grab: None,
             pinch: None,
+            confidence: None,
         }
     }
 

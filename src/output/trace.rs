@@ -35,6 +35,9 @@ pub struct TraceHand {
     pub grab: Option<f32>,
     /// The tracker's pinch strength (0..1), if it reports one.
     pub pinch: Option<f32>,
+    /// The tracker's confidence in the pose (0..1), if it reports one:
+    /// beside a slip, whether the tracker was guessing.
+    pub confidence: Option<f32>,
 }
 
 /// An object on a trace line.
@@ -60,6 +63,7 @@ impl TraceHand {
             palm_rot: sample.pose.palm.rotation.to_array(),
             grab: sample.grab,
             pinch: sample.pinch,
+            confidence: sample.confidence,
         }
     }
 }

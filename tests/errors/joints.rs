@@ -88,6 +88,17 @@ fn an_unknown_layout_or_field_is_named() {
 }
 
 #[test]
+fn a_confidence_out_of_range_is_named_with_its_frame() {
+    let e = error(&with_hand(|h| h["confidence"] = json!(1.5)));
+    names(
+        e,
+        &["rec.jsonl: frame 1: hands[0].confidence: absurd value 1.5 (at most 1 in size) (line 3)"],
+    );
+    let e = error(&with_hand(|h| h["confidence"] = json!(-0.25)));
+    names(e, &["frame 1: hands[0].confidence: must be in [0, 1], got -0.25"]);
+}
+
+#[test]
 fn numbers_that_are_not_finite_are_named_with_their_field() {
     // NaN and Infinity as Python's json module writes them; null as
     // JavaScript's JSON.stringify writes NaN.

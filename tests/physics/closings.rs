@@ -39,6 +39,7 @@ fn tracked(pose: &HandPose, grab: Option<f32>) -> TrackedHand {
         widths: pose.fingers.map(|f| 2.0 * f[0].radius),
         grab,
         pinch: None,
+        confidence: None,
     }
 }
 

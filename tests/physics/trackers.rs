@@ -71,6 +71,8 @@ fn a_joint_recording_replays_the_same_hand_as_its_leap_original() {
         worst = worst.max(pose_distance(&x.pose, &y.pose));
         assert_eq!((x.grab, x.pinch).0.is_some(), y.grab.is_some());
         assert!((x.pinch.unwrap() - y.pinch.unwrap()).abs() <= 1e-6, "pinch at {t} s");
+        let confidence = (x.confidence.unwrap() - y.confidence.unwrap()).abs();
+        assert!(confidence <= 1e-6, "confidence at {t} s");
     }
     assert!(worst < 5e-6, "the poses differ by up to {:.2} µm", worst * 1e6);
 }
@@ -181,6 +183,7 @@ fn tracked(pose: &HandPose, side: Side) -> TrackedHand {
         widths: pose.fingers.map(|f| 2.0 * f[0].radius),
         grab: None,
         pinch: None,
+        confidence: None,
     }
 }
 

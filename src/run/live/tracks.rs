@@ -117,7 +117,7 @@ impl Tracks {
             self.ids_seen.insert(hand.id);
             match hand_pose(hand, &self.conversion) {
                 Ok(pose) if pose.validate(0).is_ok() => {
-                    let sample = HandSample { pose, grab: hand.grab, pinch: hand.pinch };
+                    let sample = hand.sample(pose);
                     let side = &mut self.samples[hand.side as usize];
                     // A second hand of the same side in one frame (or at
                     // one time) is a tracker's mistake: the first counts.
