@@ -1,7 +1,7 @@
 //! The per-step trace: one JSON line per physics step, in world metres
 //! (y up). `replay --trace` and `scenario --trace` write it.
 
-use crate::hand::{HandSample, Side};
+use crate::hand::{HandPose, HandSample, Phalanx, Side};
 use crate::pipeline::InteractionWorld;
 use std::io::Write;
 
@@ -25,12 +25,14 @@ pub struct TraceHand {
     pub id: i64,
     /// Which hand.
     pub side: Side,
-    /// The centre of the palm's grasping face (m).
-    pub palm: [f32; 3],
-    /// The palm's orientation, a unit quaternion x y z w: its local y is
-    /// the grasping face's normal, its local z points to the fingers. With
-    /// `palm` it gives an object's pose in the hand's frame.
-    pub palm_rot: [f32; 4],
+    /// The hand as tracked.
+    #[serde(flatten)]
+    pub tracked: TracePose,
+    /// The hand that acts after the step: the tracked hand through the
+    /// config's tracking filter (`hand::acting`), the tracked hand itself
+    /// without one. Beside `tracked`, it tells the filter's lag from a
+    /// slip: an object that keeps its place on the acting hand did not slip.
+    pub acting: Option<TracePose>,
     /// The tracker's grab strength (0..1), if it reports one.
     pub grab: Option<f32>,
     /// The tracker's pinch strength (0..1), if it reports one.
@@ -38,6 +40,36 @@ pub struct TraceHand {
     /// The tracker's confidence in the pose (0..1), if it reports one:
     /// beside a slip, whether the tracker was guessing.
     pub confidence: Option<f32>,
+}
+
+/// Where a hand is on a trace line (m).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct TracePose {
+    /// The centre of the palm's grasping face (m).
+    pub palm: [f32; 3],
+    /// The palm's orientation, a unit quaternion x y z w: its local y is
+    /// the grasping face's normal, its local z points to the fingers. With
+    /// `palm` it gives an object's pose in the hand's frame.
+    pub palm_rot: [f32; 4],
+    /// The fingertips, thumb first: each distal phalanx's far end (m),
+    /// which shows the grip's aperture and which finger a glitch threw.
+    pub tips: [[f32; 3]; 5],
+}
+
+impl TracePose {
+    /// The entry of `pose`.
+    pub fn of(pose: &HandPose) -> TracePose {
+        TracePose {
+            palm: pose.palm_surface().to_array(),
+            palm_rot: pose.palm.rotation.to_array(),
+            tips: pose.fingers.map(|f| f[Phalanx::Distal as usize].b.to_array()),
+        }
+    }
+
+    /// Every number of the entry.
+    fn values(&self) -> impl Iterator<Item = &f32> {
+        self.palm.iter().chain(&self.palm_rot).chain(self.tips.iter().flatten())
+    }
 }
 
 /// An object on a trace line.
@@ -54,13 +86,14 @@ pub struct TraceObject {
 }
 
 impl TraceHand {
-    /// A hand's entry, from its label and this step's sample.
-    pub fn of(id: i64, side: Side, sample: &HandSample) -> TraceHand {
+    /// A hand's entry, from its label, this step's sample and the pose
+    /// that acted in the step, if the hand acted.
+    pub fn of(id: i64, side: Side, sample: &HandSample, acting: Option<&HandPose>) -> TraceHand {
         TraceHand {
             id,
             side,
-            palm: sample.pose.palm_surface().to_array(),
-            palm_rot: sample.pose.palm.rotation.to_array(),
+            tracked: TracePose::of(&sample.pose),
+            acting: acting.map(TracePose::of),
             grab: sample.grab,
             pinch: sample.pinch,
             confidence: sample.confidence,
@@ -88,7 +121,8 @@ impl TraceLine {
 
     /// Whether every number on the line is finite.
     pub fn is_finite(&self) -> bool {
-        let hands = self.hands.iter().flat_map(|h| h.palm.iter().chain(&h.palm_rot));
+        let poses = self.hands.iter().flat_map(|h| std::iter::once(&h.tracked).chain(&h.acting));
+        let hands = poses.flat_map(TracePose::values);
         let objects = self.objects.iter().flat_map(|o| o.pos.iter().chain(&o.rot).chain(&o.linvel));
         hands.chain(objects).all(|v| v.is_finite())
     }

@@ -87,7 +87,8 @@ pub struct ClosingVerdict {
     /// it go. Later than `opening_at`: [`Hold::Unsettled`].
     pub settled_at: Option<f64>,
     /// The largest distance the object moved in the palm's frame from
-    /// `settled_at` to `opening_at` (m).
+    /// `settled_at` to `opening_at` (m): the palm of the hand that acts,
+    /// which holds the object, so the tracking filter's lag is not a slip.
     pub drift: f32,
     /// The drift that is a slip: the closing hand's finger width (twice
     /// its index fingertip's radius, m). An object that moved farther
@@ -424,10 +425,12 @@ impl Judged {
             return Ok(());
         }
         let state = step.world.object_state(id)?;
-        let hand = step.hands.get(self.site.track).and_then(|h| h.sample.as_ref());
-        if let Some(hand) = hand {
+        // The hand that holds the object is the one that acts: against the
+        // tracked hand, a filtered hand's lag would read as a slip.
+        let frame = step.hands.get(self.site.track).filter(|h| h.sample.is_some());
+        if let Some(hand) = frame.and_then(|h| step.world.hand_pose(h.id)) {
             let v = &mut self.verdict;
-            let local = hand.pose.palm.to_local(state.position);
+            let local = hand.palm.to_local(state.position);
             let reference = *self.reference.get_or_insert(local);
             v.drift = v.drift.max(local.distance(reference));
             if v.drift > v.slip_bound && v.slipped_at.is_none() {

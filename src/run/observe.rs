@@ -32,7 +32,10 @@ pub fn trace_line(step: &StepView) -> TraceLine {
     let hands = step
         .hands
         .iter()
-        .filter_map(|h| h.sample.as_ref().map(|s| TraceHand::of(h.label, h.side, s)))
+        .filter_map(|h| {
+            let acting = step.world.hand_pose(h.id);
+            h.sample.as_ref().map(|s| TraceHand::of(h.label, h.side, s, acting))
+        })
         .collect();
     TraceLine::of(step.world, hands)
 }
