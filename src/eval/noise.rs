@@ -31,6 +31,8 @@ use std::path::Path;
 
 /// The Gaussian smoothing's σ (s): see the module doc.
 pub const SMOOTHING: f64 = 0.03;
+/// How far either side of a frame its smoothing window reaches (s): 3σ.
+const WINDOW: f64 = 3.0 * SMOOTHING;
 /// The shortest stretch of one tracked hand the noise is taken from (s).
 pub const MIN_TRACK: f64 = 1.0;
 /// A gap between two frames of a hand longer than this many times its
@@ -348,13 +350,12 @@ fn dropouts(times: &[f64]) -> Vec<f64> {
 /// if no frame has a whole window.
 fn residual_track(times: &[f64], poses: &[&HandPose]) -> ResidualTrack {
     let points: Vec<[Vec3; JOINTS]> = poses.iter().map(|p| joints(p)).collect();
-    let reach = 3.0 * SMOOTHING;
     let frame = median_interval(times);
     let mut track = ResidualTrack { times: Vec::new(), residuals: Vec::new() };
-    for stretch in stretches(times) {
+    for stretch in stretches(times, frame) {
         let (first, end) = (times[stretch.start], times[stretch.end - 1]);
         let whole: Vec<usize> =
-            stretch.filter(|&k| times[k] - first >= reach && end - times[k] >= reach).collect();
+            stretch.filter(|&k| times[k] - first >= WINDOW && end - times[k] >= WINDOW).collect();
         for (n, &k) in whole.iter().enumerate() {
             let step = if n == 0 { frame } else { times[k] - times[k - 1] };
             let at = track.times.last().map_or(0.0, |&s| s + step);
@@ -372,8 +373,8 @@ fn residual(times: &[f64], poses: &[&HandPose], points: &[[Vec3; JOINTS]], k: us
     let (mut weight, mut mean, mut turn) =
         (0.0f32, [Vec3::ZERO; JOINTS], Quat::from_xyzw(0.0, 0.0, 0.0, 0.0));
     let here = poses[k].palm.rotation;
-    let window = times.partition_point(|&s| s < t - 3.0 * SMOOTHING)
-        ..times.partition_point(|&s| s <= t + 3.0 * SMOOTHING);
+    let window =
+        times.partition_point(|&s| s < t - WINDOW)..times.partition_point(|&s| s <= t + WINDOW);
     for m in window {
         let w = (-0.5 * ((times[m] - t) / SMOOTHING).powi(2)).exp() as f32;
         weight += w;
@@ -388,9 +389,10 @@ fn residual(times: &[f64], poses: &[&HandPose], points: &[[Vec3; JOINTS]], k: us
     Residual { joints, turn: (frame * here).to_scaled_axis() }
 }
 
-/// The runs of frames between dropouts, as index ranges into `times`.
-fn stretches(times: &[f64]) -> Vec<std::ops::Range<usize>> {
-    let limit = DROPOUT_FACTOR * median_interval(times);
+/// The runs of frames between dropouts, as index ranges into `times`,
+/// whose median frame interval is `frame` (s).
+fn stretches(times: &[f64], frame: f64) -> Vec<std::ops::Range<usize>> {
+    let limit = DROPOUT_FACTOR * frame;
     let mut out = Vec::new();
     let mut start = 0;
     for k in 1..=times.len() {
