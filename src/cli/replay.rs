@@ -8,7 +8,9 @@ use coulomb_hands::{GammaMode, RunError};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-/// Replay a Leap Motion recording (.json.lz or .json), or a recorded session, headlessly.
+/// Replay a Leap Motion recording (.json.lz or .json), a joint recording, a recorded
+/// session, or a hand–object capture (the object then starts at its first captured pose and
+/// is measured against the capture at every frame), headlessly.
 #[derive(clap::Args)]
 pub struct ReplayArgs {
     /// The recording.
@@ -31,12 +33,28 @@ pub struct ReplayArgs {
     #[arg(long = "loop", value_name = "DURATION", conflicts_with = "record",
           value_parser = coulomb_hands::run::soak::parse_duration)]
     soak: Option<Duration>,
+    /// A capture's object mass in kg, or a comma-separated grid of them (the capture gives
+    /// none).
+    #[arg(long, value_delimiter = ',', value_name = "KG")]
+    mass: Option<Vec<f32>>,
+    /// A capture's skin–object material, or a comma-separated list (see `coulomb-hands
+    /// materials`).
+    #[arg(long, value_delimiter = ',', value_name = "NAME")]
+    material: Option<Vec<String>>,
 }
 
 impl ReplayArgs {
     /// One replay, a session's replay, or a soak.
     pub fn run(self) -> Outcome {
         use coulomb_hands::run::replay::{is_session_file, place_at_grasp, replay_recording};
+        if coulomb_hands::input::capture::is_capture_file(&self.file) {
+            return self.run_capture();
+        }
+        if self.mass.is_some() || self.material.is_some() {
+            return Err("--mass and --material are for a hand–object capture; give the object \
+                        in a recording's replay with --object"
+                .into());
+        }
         let options = ReplayOptions {
             device: self.session.device,
             grace: self.session.grace,
@@ -87,6 +105,74 @@ impl ReplayArgs {
         let format = &recording.format;
         self.output.print(&summary, |s| print_summary(s, format, closings))?;
         Ok(())
+    }
+}
+
+impl ReplayArgs {
+    /// `replay` on a hand–object capture: one replay for every mass and
+    /// material asked for, each measured against the capture.
+    fn run_capture(self) -> Outcome {
+        use coulomb_hands::run::capture::{CaptureGrid, replay_grid};
+        if self.trace.trace.is_some() || self.soak.is_some() || self.session.record.is_some() {
+            return Err("a capture replays once, without --trace, --loop or --record".into());
+        }
+        let grid = CaptureGrid::new(self.method.method, self.gamma, self.mass, self.material)?;
+        let capture = coulomb_hands::input::capture::load(&self.file)?;
+        let report = replay_grid(&capture, &grid)?;
+        self.output.print(&report, print_capture)?;
+        Ok(())
+    }
+}
+
+/// A capture's replays as text: the capture, then one block per replay.
+fn print_capture(report: &coulomb_hands::run::capture::CaptureReport) {
+    let c = &report.capture;
+    let hand = match c.hand {
+        "surface" => "fitted to 778 surface points",
+        _ => "from 21 keypoints",
+    };
+    let w = c.finger_widths_mm.map(|w| format!("{w:.1}")).join(" ");
+    println!("replayed capture {} ({} frames at {} Hz)", c.source, c.frames, c.frame_rate_hz);
+    let side = |s: coulomb_hands::Side| format!("{s:?}").to_lowercase();
+    println!(
+        "hand: {}, {hand}: finger widths {w} mm (thumb first), palm skin {:.1} mm before its \
+         bones",
+        side(c.side),
+        c.palm_depth_mm
+    );
+    if c.shape != c.side {
+        println!(
+            "  its fingers curl as a {} hand's do (the capture's frame is mirrored): built as one",
+            side(c.shape)
+        );
+    }
+    for r in &report.replays {
+        let s = &r.score;
+        let yes = |b: bool| if b { "yes" } else { "no" };
+        println!("{} with a {:.2} kg object, {}:", r.method, r.mass_kg, r.material);
+        println!(
+            "  translation error: mean {:.1} mm, largest {:.1} mm (target 10, 30)",
+            s.translation_mean_mm, s.translation_max_mm
+        );
+        println!(
+            "  rotation error: mean {:.1}°, largest {:.1}° (target 5, 15)",
+            s.rotation_mean_deg, s.rotation_max_deg
+        );
+        println!(
+            "  lift: {:.0} mm, captured {:.0} mm (lifted: {})",
+            s.simulated_lift_mm,
+            s.captured_lift_mm,
+            yes(s.lifted())
+        );
+        println!(
+            "  set down {:.0} mm from the captured place, {:.1} mm above its start, captured {:.1} \
+             mm (set down: {})",
+            s.set_down.distance_mm,
+            s.set_down.height_mm,
+            s.set_down.captured_height_mm,
+            yes(s.set_down())
+        );
+        println!("  on target: {}; all values finite: {}", yes(s.on_target()), s.all_finite);
     }
 }
 

@@ -4,6 +4,7 @@
 //! tracker's own units and axes; a [`convert::Conversion`] maps them into the
 //! world (metres, y up); [`skeleton::hand_pose`] builds the 16-bone model.
 
+pub mod capture;
 pub mod convert;
 pub mod joints;
 pub mod layouts;

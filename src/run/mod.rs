@@ -18,6 +18,7 @@
 //! * [`clock`]: the wall clock the timed runs are given.
 
 pub mod bench;
+pub mod capture;
 pub mod clock;
 pub mod closing;
 pub mod demo;

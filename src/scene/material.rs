@@ -126,6 +126,14 @@ impl Material {
         }
     }
 
+    /// The material called `name`, or an error listing the known names.
+    pub fn by_name(name: &str) -> Result<Material, String> {
+        Self::named(name).ok_or_else(|| {
+            let known: Vec<_> = Self::names().collect();
+            format!("unknown material {name:?} (known: {})", known.join(", "))
+        })
+    }
+
     /// Wood, the default material of the demo scenes.
     pub fn wood() -> Material {
         Self::named("wood").unwrap_or_else(|| Self::custom("wood", 0.46, 0.46, 0.5))

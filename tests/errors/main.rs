@@ -3,6 +3,7 @@
 //! JSON path, the frame, the bad value. One module per area.
 
 mod bench;
+mod capture;
 mod cli;
 mod input;
 mod joints;

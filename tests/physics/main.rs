@@ -5,6 +5,7 @@ mod acting;
 mod balance;
 mod baselines;
 mod bench;
+mod captures;
 mod carry;
 mod closings;
 mod controls;
