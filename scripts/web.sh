@@ -9,7 +9,8 @@
 #   scripts/wasm-core.sh's two routes, then wasm-bindgen's JavaScript module (`wasm-bindgen
 #   --target web`);
 # - vendor/: three.js, from web/node_modules (`npm ci` there, run here when it is missing);
-# - data/: the recording the page replays (data/leap/grab.json.lz).
+# - data/: the recording and the hand–object capture the page replays (data/leap/grab.json.lz,
+#   data/taco/taco_20231104_017.json and the .obj mesh it names).
 # It needs wasm-bindgen-cli at the lock file's wasm-bindgen version:
 #   cargo install wasm-bindgen-cli --version "$(scripts/web.sh --wasm-bindgen-version)"
 # and Node.js with npm, and, for the Debian route, what scripts/wasm-core.sh says.
@@ -46,7 +47,8 @@ cp web/node_modules/three/build/three.module.js web/node_modules/three/build/thr
   web/vendor/three/
 cp web/node_modules/three/examples/jsm/controls/OrbitControls.js web/vendor/three/controls/
 cp web/node_modules/three/LICENSE web/vendor/three/
-cp data/leap/grab.json.lz web/data/
+cp data/leap/grab.json.lz data/taco/taco_20231104_017.json data/taco/taco_20231104_017.obj \
+  web/data/
 echo "web: built web/ ($(du -h web/pkg/coulomb_hands_web_bg.wasm | cut -f1) of wasm)" >&2
 if [[ ${1:-} == --serve ]]; then
   port=${2:-8000}

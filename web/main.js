@@ -3,7 +3,7 @@
 // whatever the display's rate; hands come from the run's script, the mouse and keys (the
 // desk), or WebXR hand tracking (Enter VR / Enter AR).
 //
-// URL parameters: `run=demo|desk|recording|<scenario name>` picks the run; `fast` steps 250
+// URL parameters: `run=demo|desk|recording|capture|<scenario name>` picks the run; `fast` steps 250
 // steps a frame whatever the clock (the tests'); `granted` steps only the steps granted by
 // `app.grant(n)`, each grant run whole at the next frame, after the hands are posed (and
 // the hands posed only then), so a test that moves a hand and then grants steps gets the
@@ -27,6 +27,12 @@ const FAST_STEPS_PER_FRAME = 250;
 // Where the desk's origin sits in an immersive session's floor-level space (m): a table
 // height ahead of the viewer.
 const XR_DESK = new THREE.Vector3(0, 0.85, -0.4);
+// The captured object of a capture, drawn beside the simulated one: light blue, see-through.
+const GHOST_COLOR = 0x9ecbff;
+const GHOST_OPACITY = 0.35;
+// The bundled hand–object capture (TACO) and the mesh it names, copied into data/ by
+// scripts/web.sh.
+const CAPTURE = 'taco_20231104_017';
 const MATERIAL_COLORS = { wood: 0xd9a441, rubber: 0x3a7bd5, aluminium: 0xb8bcc4, steel: 0x9aa0a8,
   glass: 0x9fd8e8, plastic: 0x52b788, ceramic: 0xf1f1e6 };
 
@@ -34,6 +40,7 @@ const status = document.getElementById('status');
 const reportBox = document.getElementById('report');
 const errorBox = document.getElementById('error');
 const modeSelect = document.getElementById('mode');
+const credit = document.getElementById('credit');
 
 // Every error shows on the page and in the console, and the page keeps running.
 function showError(error) {
@@ -76,6 +83,11 @@ const app = {
 window.app = app;
 // Which objects' meshes are shown, by id (for the tests).
 app.shownObjects = () => drawn.objects.map((mesh) => mesh.visible);
+// A capture's ghost as drawn, or null (for the tests).
+app.shownGhost = () => drawn.ghost && { visible: drawn.ghost.visible,
+  opacity: drawn.ghost.material.opacity, inScene: drawn.ghost.parent === root,
+  triangles: drawn.ghost.geometry.attributes.position.count / 3,
+  position: drawn.ghost.position.toArray() };
 // With `granted`: `n` more steps, run at the next frame with the hands as posed then.
 app.grant = (n) => {
   if (!GRANTING) throw new Error('app.grant needs the page opened with ?granted');
@@ -130,7 +142,7 @@ window.addEventListener('resize', resize);
 resize();
 
 // What is drawn of the world: its objects, its statics, its hands.
-let drawn = { objects: [], statics: null, hands: new Map(), previous: new Map() };
+let drawn = { objects: [], statics: null, ghost: null, hands: new Map(), previous: new Map() };
 let mouse = null;
 
 function objectMaterial(name) {
@@ -148,8 +160,9 @@ function geometry(triangles) {
 function clearDrawn() {
   for (const mesh of drawn.objects) root.remove(mesh);
   if (drawn.statics) root.remove(drawn.statics);
+  if (drawn.ghost) root.remove(drawn.ghost);
   for (const hand of drawn.hands.values()) root.remove(hand.group);
-  drawn = { objects: [], statics: null, hands: new Map(), previous: new Map() };
+  drawn = { objects: [], statics: null, ghost: null, hands: new Map(), previous: new Map() };
 }
 
 // Meshes for the objects not drawn yet: all at first, then those a run adds (a recording's
@@ -184,12 +197,22 @@ function drawWorld(world) {
     drawn.statics.visible = !(app.xr && app.xr.mode === 'immersive-ar');
     root.add(drawn.statics);
   }
+  // A capture's captured object: its own mesh, at the captured pose of the world's time.
+  const ghost = world.ghostMesh();
+  if (ghost.length) {
+    drawn.ghost = new THREE.Mesh(geometry(ghost), new THREE.MeshStandardMaterial({
+      color: GHOST_COLOR, roughness: 0.5, transparent: true, opacity: GHOST_OPACITY,
+      depthWrite: false }));
+    drawn.ghost.name = 'ghost';
+    root.add(drawn.ghost);
+  }
 }
 
 // The runs the page offers: the demo, every shipped scenario, the bundled recording, the desk.
 const MODES = [['desk', 'Desk: your hand (mouse and keys, or WebXR)'],
   ['demo', 'Demo: grasp, lift, carry, turn, open'],
   ['recording', 'Recording: grab.json.lz, a box at each closing'],
+  ['capture', 'Capture: TACO, the ghost in blue'],
   ...wasm.shippedScenarios().map((name) => [name, `Scenario: ${name}`])];
 for (const [value, label] of MODES) {
   const option = document.createElement('option');
@@ -203,12 +226,22 @@ async function makeWorld(mode, file) {
   if (mode === 'demo') return wasm.World.demo();
   if (mode === 'desk') return wasm.World.desk();
   if (mode === 'recording') {
-    const response = await fetch('data/grab.json.lz');
-    if (!response.ok) throw new Error(`data/grab.json.lz: ${response.status} ${response.statusText}`);
-    const bytes = new Uint8Array(await response.arrayBuffer());
+    const bytes = await fetchData('grab.json.lz');
     return wasm.World.recording('grab.json.lz', bytes, wasm.closingObject());
   }
+  if (mode === 'capture') {
+    const files = [`${CAPTURE}.json`, `${CAPTURE}.obj`];
+    const [json, mesh] = await Promise.all(files.map(fetchData));
+    return wasm.World.capture(`${CAPTURE}.json`, new TextDecoder().decode(json), mesh);
+  }
   return wasm.World.scenario(mode);
+}
+
+// A bundled file's bytes, from data/.
+async function fetchData(name) {
+  const response = await fetch(`data/${name}`);
+  if (!response.ok) throw new Error(`data/${name}: ${response.status} ${response.statusText}`);
+  return new Uint8Array(await response.arrayBuffer());
 }
 
 // A file of the user's: a recording, a scenario or scene, or a mesh put on the desk.
@@ -249,6 +282,10 @@ function placeCamera(mode) {
   if (mode === 'recording') {
     camera.position.set(0.3, 0.36, 0.45);
     controls.target.set(0.04, 0.14, 0);
+  } else if (mode === 'capture') {
+    // The captured table top is at about 0.55 m; the object rises 0.2 m above it.
+    camera.position.set(0.5, 0.95, 0.68);
+    controls.target.set(0, 0.64, 0.08);
   } else if (mode === 'desk') {
     camera.position.set(0.05, 0.38, -0.62);
     controls.target.set(0, 0.04, 0.02);
@@ -285,6 +322,8 @@ async function load(mode, file = null) {
   drawWorld(world);
   if (!app.xr) placeCamera(mode);
   reportBox.textContent = '';
+  // The capture's data is TACO's (CC BY 4.0): credited while it plays.
+  credit.hidden = !(mode === 'capture' && !file);
   document.title = `coulomb-hands: ${app.mode}`;
   return true;
 }
@@ -373,6 +412,11 @@ function draw(world, seconds) {
     if (!drawn.objects[id].visible) continue;
     drawn.objects[id].position.set(s[0], s[1], s[2]);
     drawn.objects[id].quaternion.set(s[3], s[4], s[5], s[6]);
+  }
+  if (drawn.ghost) {
+    const g = world.ghostPose();
+    drawn.ghost.position.set(g[0], g[1], g[2]);
+    drawn.ghost.quaternion.set(g[3], g[4], g[5], g[6]);
   }
   const contacts = world.contacts();
   // Each hand is drawn opaque exactly while it has contacts, as the viewer draws it (§3.6).

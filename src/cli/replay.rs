@@ -47,7 +47,9 @@ impl ReplayArgs {
     /// One replay, a session's replay, or a soak.
     pub fn run(self) -> Outcome {
         use coulomb_hands::run::replay::{is_session_file, place_at_grasp, replay_recording};
-        if coulomb_hands::input::capture::is_capture_file(&self.file) {
+        if !is_session_file(&self.file)
+            && coulomb_hands::input::capture::is_capture_file(&self.file)
+        {
             return self.run_capture();
         }
         if self.mass.is_some() || self.material.is_some() {

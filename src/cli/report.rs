@@ -6,13 +6,15 @@ use super::bench::BenchRunArgs;
 use super::eval::accuracy::StudyArgs;
 use super::{Outcome, progress_bar};
 use coulomb_hands::GammaMode;
+use coulomb_hands::Method;
 use coulomb_hands::eval::AccuracyOptions;
 use coulomb_hands::output::report::{
-    Ablation, AccuracyStudy, BenchReport, Header, ReplayRun, ReportData, ScenarioRun, Sourced,
-    SweepStudy, html, utc_date,
+    Ablation, AccuracyStudy, BenchReport, CaptureRuns, Header, ReplayRun, ReportData, ScenarioRun,
+    Sourced, SweepStudy, html, utc_date,
 };
 use coulomb_hands::run::bench::{BenchError, BenchOptions, mujoco};
-use coulomb_hands::run::report::{ReplayInput, bundled_recordings, scenario_run};
+use coulomb_hands::run::capture::CaptureOptions;
+use coulomb_hands::run::report::{CaptureInput, ReplayInput, bundled_recordings, scenario_run};
 use coulomb_hands::run::scenario::{Scenario, shipped};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -204,6 +206,7 @@ impl ReportArgs {
         let scenarios = names.iter().map(|n| Scenario::find(n)).collect::<Result<Vec<_>, _>>()?;
         let files = self.replays.as_deref().map_or_else(bundled_recordings, <[PathBuf]>::to_vec);
         let inputs = files.iter().map(|f| ReplayInput::load(f)).collect::<Result<Vec<_>, _>>()?;
+        let capture = CaptureInput::bundled()?;
         if let Source::Run(BenchOptions { mujoco: Some(python), .. }) = &bench {
             mujoco::check(python)?;
         }
@@ -212,12 +215,15 @@ impl ReportArgs {
         let header = header();
         let accuracy_data = accuracy_file.or(study(&accuracy, &header.build)?);
         let bench_data = bench_file.or(run_bench(&bench, &header.build)?);
-        let (scenario_runs, replay_runs) = run_catalogue(&scenarios, &inputs);
+        let (scenario_runs, replay_runs, capture_runs) =
+            run_catalogue(&scenarios, &inputs, capture.as_ref());
         let passed = scenario_runs.iter().filter(|r| r.passed).count();
         let summary = format!(
-            "{} scenarios ({passed} passed), {} replays; accuracy: {}, bench: {}",
+            "{} scenarios ({passed} passed), {} replays, {} capture replays; accuracy: {}, \
+             bench: {}",
             scenario_runs.len(),
             replay_runs.len(),
+            capture_runs.as_ref().map_or(0, |c| c.methods.len()),
             accuracy.word(),
             bench.word(),
         );
@@ -228,6 +234,7 @@ impl ReportArgs {
             bench: bench_data,
             scenarios: Some(scenarios_section(scenario_runs, named_scenarios, &header.build)),
             replays: Some(replays_section(replay_runs, named_replays)),
+            captures: capture_runs.map(captures_section),
             header,
         };
         let path = self.out.join("index.html");
@@ -237,12 +244,15 @@ impl ReportArgs {
     }
 }
 
-/// Every scenario and replay run, with a progress bar on a terminal.
+/// Every scenario, replay and method's replay of the capture, with a
+/// progress bar on a terminal.
 fn run_catalogue(
     scenarios: &[Scenario],
     inputs: &[ReplayInput],
-) -> (Vec<ScenarioRun>, Vec<ReplayRun>) {
-    let runs = (scenarios.len() + inputs.len()) as u64;
+    capture: Option<&CaptureInput>,
+) -> (Vec<ScenarioRun>, Vec<ReplayRun>, Option<CaptureRuns>) {
+    let methods = if capture.is_some() { Method::ALL.len() } else { 0 };
+    let runs = (scenarios.len() + inputs.len() + methods) as u64;
     let template = "{bar:30} {pos}/{len} {msg} ({elapsed})";
     let bar = progress_bar(std::io::stderr().is_terminal(), runs, template);
     let mut scenario_runs = Vec::new();
@@ -257,8 +267,17 @@ fn run_catalogue(
         replay_runs.push(input.run());
         bar.inc(1);
     }
+    let capture_runs = capture.map(|c| {
+        let mut runs = Vec::new();
+        for method in Method::ALL {
+            bar.set_message(format!("capture {} ({method})", c.name));
+            runs.push(c.run(method));
+            bar.inc(1);
+        }
+        c.runs(runs)
+    });
     bar.finish_and_clear();
-    (scenario_runs, replay_runs)
+    (scenario_runs, replay_runs, capture_runs)
 }
 
 /// The scenarios' section, saying which ran: every shipped one, or those
@@ -291,6 +310,19 @@ fn replays_section(runs: Vec<ReplayRun>, named: bool) -> Sourced<Vec<ReplayRun>>
          defaults (γ = {} N/m) and a box at every closing of a hand (4 cm, 50 g if the \
          first closing is a fist; 2 cm, 10 g otherwise)",
         GammaMode::default()
+    );
+    Sourced { source, data: runs }
+}
+
+/// The capture's section, saying how it was replayed.
+fn captures_section(runs: CaptureRuns) -> Sourced<CaptureRuns> {
+    let source = format!(
+        "replayed by this command: {} with each method, with the capture replay's defaults \
+         (γ = {} N/m, a {} kg object, {}: the capture gives no mass or material)",
+        runs.capture,
+        CaptureOptions::default().gamma,
+        runs.mass_kg,
+        runs.material
     );
     Sourced { source, data: runs }
 }

@@ -1,20 +1,26 @@
 //! The runs that `coulomb-hands report` shows, as the report's data
 //! ([`crate::output::report`]): scenarios with every object's hand force
-//! and height per step, and recordings replayed with an object at every
-//! closing of their hands, judged ([`super::closing`]). A run that fails
-//! is a section entry with its error, not an error of the report.
+//! and height per step, recordings replayed with an object at every
+//! closing of their hands, judged ([`super::closing`]), and the bundled
+//! hand–object capture replayed with each method ([`super::capture`]). A
+//! run that fails is a section entry with its error, not an error of the
+//! report.
 
 use super::RunError;
+use super::capture::{CaptureOptions, replay_capture};
 use super::clock::Clock;
 use super::closing::{ClosingVerdict, Hold};
 use super::drive::{Observer, StepView};
 use super::grasp::{SAMPLE_STEP, find_grasps, is_power_grasp};
 use super::replay::{GraspObject, replay, replay_closings, replay_world};
 use super::scenario::Scenario;
+use crate::input::capture::{self, Capture};
 use crate::input::playback::{DEFAULT_GRACE, Playback};
 use crate::input::recording::{self, Recording};
-use crate::output::report::{ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict};
-use crate::pipeline::InteractionConfig;
+use crate::output::report::{
+    CaptureMethodRun, CaptureRuns, ObjectSeries, ReplayObject, ReplayRun, ScenarioRun, Verdict,
+};
+use crate::pipeline::{InteractionConfig, Method};
 use std::path::{Path, PathBuf};
 
 /// Records every object's hand force (magnitude, N) and height (m) after
@@ -218,4 +224,83 @@ fn closing_verdicts(c: &ClosingVerdict) -> [Verdict; 2] {
             passed: c.released == Some(true),
         },
     ]
+}
+
+/// The hand–object capture bundled in the repository's `data/taco/`.
+pub const BUNDLED_CAPTURE: &str = "data/taco/taco_20231104_017.json";
+
+/// The bundled capture's credit, which its licence asks for wherever the
+/// data or figures drawn from it are shown (`data/taco/README.md`).
+pub const TACO_CREDIT: &str = "TACO (Liu et al., CVPR 2024), CC BY 4.0";
+
+/// A hand–object capture read and ready to replay with each method.
+#[derive(Debug, Clone)]
+pub struct CaptureInput {
+    /// The file's name for the report, relative to the repository.
+    pub name: String,
+    /// Whose data it is and under which licence.
+    pub credit: String,
+    /// The capture.
+    pub capture: Capture,
+}
+
+impl CaptureInput {
+    /// The bundled capture ([`BUNDLED_CAPTURE`]), read; `None` if it is not
+    /// beside this build (the published crate leaves it out). An error
+    /// names the file and what is wrong with it.
+    pub fn bundled() -> Result<Option<CaptureInput>, RunError> {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(BUNDLED_CAPTURE);
+        if !path.is_file() {
+            return Ok(None);
+        }
+        let (name, credit) = (BUNDLED_CAPTURE.to_string(), TACO_CREDIT.to_string());
+        Ok(Some(CaptureInput { name, credit, capture: capture::load(&path)? }))
+    }
+
+    /// Replays it with `method` at the default mass and material
+    /// ([`CaptureOptions::default`]): the score and the per-frame series
+    /// the report plots, or why it stopped.
+    pub fn run(&self, method: Method) -> CaptureMethodRun {
+        let mut out = CaptureMethodRun { method: method.to_string(), ..Default::default() };
+        let options = CaptureOptions { method, ..CaptureOptions::default() };
+        match replay_capture(&self.capture, &options) {
+            Ok(r) => {
+                let s = r.score;
+                out.translation_mean_mm = s.translation_mean_mm.into();
+                out.translation_max_mm = s.translation_max_mm.into();
+                out.rotation_mean_deg = s.rotation_mean_deg.into();
+                out.rotation_max_deg = s.rotation_max_deg.into();
+                out.simulated_lift_mm = s.simulated_lift_mm.into();
+                out.captured_lift_mm = s.captured_lift_mm.into();
+                out.on_target = s.on_target();
+                out.simulated_height_mm = r.frames.iter().map(|f| f.simulated_height_mm).collect();
+                out.translation_error_mm =
+                    r.frames.iter().map(|f| f.translation_error_mm).collect();
+            }
+            Err(e) => out.error = Some(e.to_string()),
+        }
+        out
+    }
+
+    /// The report's section of `runs` of it: the captured object's height
+    /// at every frame beside them.
+    pub fn runs(&self, methods: Vec<CaptureMethodRun>) -> CaptureRuns {
+        let c = &self.capture;
+        let start = c.poses.first().map_or(0.0, |p| p.0.y);
+        let options = CaptureOptions::default();
+        CaptureRuns {
+            capture: self.name.clone(),
+            credit: self.credit.clone(),
+            mass_kg: options.mass,
+            material: options.material.name,
+            time_s: (0..c.poses.len()).map(|i| c.time(i)).collect(),
+            captured_height_mm: c.poses.iter().map(|p| (p.0.y - start) * 1e3).collect(),
+            methods,
+        }
+    }
+
+    /// Replayed with every method ([`Method::ALL`]), as the report shows it.
+    pub fn run_every_method(&self) -> CaptureRuns {
+        self.runs(Method::ALL.into_iter().map(|m| self.run(m)).collect())
+    }
 }

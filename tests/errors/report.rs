@@ -3,7 +3,7 @@
 //! line and what is wrong; and, for contrast, the JSON that `eval accuracy`
 //! and `bench` write reads as the report's types, and a report on a reduced
 //! set works, with the study and the bench run by the report itself or left
-//! out.
+//! out, and with the bundled hand–object capture replayed by every method.
 
 use crate::{Scratch, cli_error, names, run, usage_error};
 use coulomb_hands::eval::board::{SQUARE, SQUARES};
@@ -87,13 +87,14 @@ fn a_report_of_one_scenario_and_one_replay_has_every_section() {
     ]);
     assert_eq!(code, Some(0), "{stderr}");
     let index = dir.path("out/index.html");
-    let summary = "1 scenarios (1 passed), 1 replays; accuracy: given, bench: given";
+    let summary =
+        "1 scenarios (1 passed), 1 replays, 4 capture replays; accuracy: given, bench: given";
     assert_eq!(stdout, format!("wrote {}: {summary}\n", index.display()));
     let files: Vec<_> = std::fs::read_dir(dir.path("out")).unwrap().collect();
     assert_eq!(files.len(), 1, "only index.html, no probe left: {files:?}");
     let page = std::fs::read_to_string(&index).unwrap();
-    // Accuracy 1, performance 3, one scenario.
-    assert_eq!(page.matches("<svg").count(), 5);
+    // Accuracy 1, performance 3, one scenario, the capture's 2.
+    assert_eq!(page.matches("<svg").count(), 7);
     for text in [
         "Placement accuracy",
         "9.2 ± 5.5 / 8.2",
@@ -105,6 +106,8 @@ fn a_report_of_one_scenario_and_one_replay_has_every_section() {
         "data/leap/pinch.json.lz",
         "a 2.0 cm, 10 g box at",
         "contacts begun",
+        "Real hands moving real objects",
+        "data/taco/taco_20231104_017.json with each method",
         "report --out",
         "cores",
     ] {
@@ -183,6 +186,47 @@ fn row(page: &str, first: &str) -> Vec<String> {
     let line = &page[start..page[start..].find("</tr>").map_or(page.len(), |e| start + e)];
     let text = |cell: &str| cell.rsplit('>').next().unwrap_or("").to_string();
     line.split("</td>").filter(|c| c.contains("<td")).map(text).collect()
+}
+
+#[test]
+fn the_bundled_capture_replayed_by_every_method_shows_who_lifts_it() {
+    use coulomb_hands::output::report::{ReportData, Sourced, html};
+    use coulomb_hands::run::report::CaptureInput;
+    let input = CaptureInput::bundled().expect("it reads").expect("it is in the repository");
+    let runs = input.run_every_method();
+    // The captured hand lifts the object about 0.2 m, and each replay has a
+    // height and an error at every captured frame.
+    let captured = runs.captured_height_mm.iter().copied().fold(f32::MIN, f32::max);
+    assert!(captured > 150.0, "the captured object rises {captured} mm");
+    for m in &runs.methods {
+        assert_eq!(m.error, None, "{}", m.method);
+        assert_eq!(m.simulated_height_mm.len(), runs.time_s.len(), "{}", m.method);
+        assert_eq!(m.translation_error_mm.len(), runs.time_s.len(), "{}", m.method);
+    }
+    let data = ReportData {
+        captures: Some(Sourced { source: "replayed here".into(), data: runs }),
+        ..ReportData::default()
+    };
+    let page = html(&data);
+    let section = &page[page.find("<section id=\"captures\">").expect("the section")..];
+    assert!(section.contains("7. Real hands moving real objects"));
+    assert!(section.contains("Capture data: TACO (Liu et al., CVPR 2024), CC BY 4.0."));
+    // Two plots: heights, errors; the TACO credit under each.
+    assert_eq!(section.matches("<svg").count(), 2);
+    assert_eq!(section.matches("Data: TACO (Liu et al., CVPR 2024), CC BY 4.0").count(), 2);
+    let lift = |method: &str| {
+        let cells = row(section, method);
+        assert_eq!(cells.len(), 8, "{method}: {cells:?}");
+        let n = |i: usize| numbers(&cells[i]).map(|v| v[0]).expect("a number");
+        assert!((1..=6).all(|i| n(i) >= 0.0), "{method}: {cells:?}");
+        (n(5), n(6))
+    };
+    for method in ["coulomb", "thesis", "heuristic"] {
+        lift(method);
+    }
+    // A grab baseline holds the object to the hand: it rises with it.
+    let (reached, captured) = lift("kinematic");
+    assert!(captured > 150.0 && reached >= 0.5 * captured, "{reached} of {captured} mm");
 }
 
 /// The numbers in a cell such as `2.0 ± 0.5 / 1.8`; none if any is not one.

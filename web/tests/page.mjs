@@ -3,7 +3,8 @@
 // bit) must equal the native library's (`examples/reference.rs` of crates/coulomb-hands-web,
 // built with enhanced-determinism, as the page is), and the scenario's report too. Every
 // shipped scenario, chosen in the page, reports as natively (and passes), and the bundled
-// recording's closings get the native verdicts. Then a malformed scene shows its error and
+// recording's closings get the native verdicts; the bundled capture draws its captured object as
+// a ghost that rises as the captured hand lifts it. Then a malformed scene shows its error and
 // the page keeps running.
 //
 //   scripts/web.sh
@@ -53,6 +54,26 @@ try {
           `${name}: the native report, passed`);
       }
     }
+    check(console.length === 0, `no console errors (${console})`);
+    await page.close();
+  }
+  // The bundled capture: its captured object drawn as a see-through ghost at the captured pose,
+  // which rises as the captured hand lifts it, and TACO credited.
+  {
+    const { page, console } = await open(browser, server.url, '?run=capture&granted');
+    const ghost = () => page.evaluate(() => ({ ghost: window.app.shownGhost(),
+      steps: window.app.world.steps, credit: !document.getElementById('credit').hidden,
+      objects: window.app.shownObjects() }));
+    const start = await ghost();
+    const shown = start.ghost && start.ghost.inScene && start.ghost.visible;
+    check(shown && start.ghost.triangles === 2000 && Math.abs(start.ghost.opacity - 0.35) < 1e-6,
+      `the capture's ghost is drawn: ${JSON.stringify(start.ghost)}`);
+    check(start.credit && start.objects.length === 1 && start.objects[0], 'TACO credited, the object drawn');
+    await page.evaluate(() => window.app.grant(1300));
+    await page.waitForFunction(() => window.app.world.steps === 1300, { timeout: 120_000 });
+    const lifted = await ghost();
+    const rise = lifted.ghost.position[1] - start.ghost.position[1];
+    check(rise > 0.05, `the ghost rose ${(rise * 1000).toFixed(1)} mm by 1.3 s`);
     check(console.length === 0, `no console errors (${console})`);
     await page.close();
   }

@@ -8,9 +8,9 @@
 //! * `world.rs`: `World`, an `InteractionWorld`;
 //! * `arrays.rs`: arrays in (shapes checked, named) and out, and hand poses
 //!   as dicts of arrays;
-//! * `runs.rs`: the runs the CLI has (`replay`, `run_scenario`,
-//!   `eval_accuracy`, `bench`), each returning its `--json` data, and the
-//!   recordings' loader;
+//! * `runs.rs`: the runs the CLI has (`replay`, `replay_capture`,
+//!   `run_scenario`, `eval_accuracy`, `bench`), each returning its `--json`
+//!   data, and the recordings' loader;
 //! * here: the exceptions, one per library error kind, and the module.
 
 mod arrays;

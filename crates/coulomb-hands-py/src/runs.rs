@@ -1,18 +1,20 @@
 //! The runs the CLI has, each the library function the CLI calls, its
 //! result the CLI's `--json` data as Python objects (through JSON, so a
-//! `json.dumps` of it is the CLI's text); and the recordings' loader.
+//! `json.dumps` of it is the CLI's text), a hand–object capture's replay
+//! among them; and the recordings' loader.
 
-use crate::arrays::{points_array, pose_dict};
+use crate::arrays::{column, points_array, pose_dict};
 use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError, UnknownMethodError};
 use crate::{bench_error, run_error};
-use coulomb_hands::Method;
 use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, accuracy};
 use coulomb_hands::input::mediapipe::{self, Label};
-use coulomb_hands::input::{layouts, recording, skeleton};
+use coulomb_hands::input::{capture, layouts, recording, skeleton};
 use coulomb_hands::run::bench::{self as lib_bench, BenchOptions};
+use coulomb_hands::run::capture::{CaptureGrid, replay_grid};
 use coulomb_hands::run::replay::{GraspObject, ReplayOptions, replay_file};
 use coulomb_hands::run::scenario::{Scenario, ScenarioReports};
 use coulomb_hands::scene::Scene;
+use coulomb_hands::{GammaMode, Method};
 use glam::Vec3;
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -83,6 +85,42 @@ fn replay<'py>(
         replay_file(&path, &options)
     });
     to_python(py, &summary.map_err(run_error)?)
+}
+
+/// Replays a hand–object capture over a grid of object masses (kg; a
+/// float or a list) and materials (a name or a list), each `None` for the
+/// library's default: `replay CAPTURE --json`'s data, `{"capture": {...},
+/// "replays": [...]}`.
+#[pyfunction]
+#[pyo3(signature = (path, *, method = "coulomb", mass = None, material = None, gamma = None))]
+fn replay_capture<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    method: &str,
+    mass: Option<&Bound<'_, PyAny>>,
+    material: Option<&Bound<'_, PyAny>>,
+    gamma: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let masses = mass
+        .map(|m| m.extract::<f32>().map(|m| vec![m]).or_else(|_| column(m, "mass", None)))
+        .transpose()?;
+    let materials = material.map(|m| names(m, "material")).transpose()?;
+    let gamma = gamma.map_or(Ok(GammaMode::default()), crate::world::gamma)?;
+    let method = self::method(method)?;
+    let report = py.detach(|| {
+        let grid = CaptureGrid::new(method, gamma, masses, materials)?;
+        let capture = capture::load(&path)?;
+        replay_grid(&capture, &grid)
+    });
+    to_python(py, &report.map_err(run_error)?)
+}
+
+/// A name or a list of names, the argument `what`.
+fn names(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<String>> {
+    let one = value.extract::<String>().map(|name| vec![name]);
+    one.or_else(|_| value.extract::<Vec<String>>()).map_err(|e| {
+        ArgumentError::new_err(format!("{what}: expected a name or a list of names ({e})"))
+    })
 }
 
 /// Runs a shipped scenario by name (e.g. `push`) or a scenario file:
@@ -272,6 +310,7 @@ fn load_mediapipe<'py>(
 /// Adds the runs to the module.
 pub fn add(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(replay, m)?)?;
+    m.add_function(wrap_pyfunction!(replay_capture, m)?)?;
     m.add_function(wrap_pyfunction!(run_scenario, m)?)?;
     m.add_function(wrap_pyfunction!(eval_accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(run_bench, m)?)?;

@@ -75,6 +75,17 @@ def test_missing_files_raise_errors_naming_them(tmp_path: Any) -> None:
     raises(ch.InputError, lambda: ch.replay(bad), "bad.jsonl", "frame 0", "hands")
 
 
+def test_a_capture_replay_names_a_missing_file_a_bad_mass_and_an_unknown_material(tmp_path: Any) -> None:
+    capture = REPO / "data" / "taco" / "taco_20231104_017.json"
+    missing = tmp_path / "nowhere.json"
+    raises(ch.InputError, lambda: ch.replay_capture(missing), str(missing))
+    raises(ch.StudyError, lambda: ch.replay_capture(capture, mass=-1), "mass", "-1 kg")
+    raises(ch.StudyError, lambda: ch.replay_capture(capture, mass=[0.3, 0.0]), "mass", "0 kg")
+    raises(ch.StudyError, lambda: ch.replay_capture(capture, material="unobtainium"), "unobtainium", "known", "wood", "rubber")
+    raises(ch.ShapeError, lambda: ch.replay_capture(capture, mass="heavy"), "mass")
+    raises(ch.ArgumentError, lambda: ch.replay_capture(capture, material=["wood", 3]), "material")
+
+
 def test_a_world_goes_on_after_an_error_as_if_it_had_not_been() -> None:
     def world() -> tuple[ch.World, int]:
         w = ch.World()

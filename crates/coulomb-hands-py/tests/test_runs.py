@@ -8,6 +8,7 @@ import json
 import os
 import subprocess
 from pathlib import Path
+from typing import Callable, TypeVar
 
 import numpy as np
 import pytest
@@ -15,6 +16,7 @@ import coulomb_hands as ch
 from conftest import REPO
 
 RECORDING = REPO / "data" / "joints" / "pinch-57fps.jsonl"
+T = TypeVar("T")
 
 
 def test_openxr_joints_of_a_recording_pose_the_hand_the_rust_loader_poses() -> None:
@@ -63,22 +65,29 @@ def cli() -> Path:
     pytest.fail("no coulomb-hands binary: build it with `cargo build` or set COULOMB_HANDS_BIN")
 
 
-def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
-    recording = "data/leap/pinch.json.lz"
-    args = ["--object-at-grasp", "box:0.038:0.045", "--gamma", "330", "--grace", "0.12"]
-    out = subprocess.run(
-        [str(cli()), "replay", recording, "--json", *args],
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        check=True,
-    ).stdout
+def cli_json(*args: str) -> str:
+    """The binary's `--json` output for `args`, run in the repository."""
+    command = [str(cli()), *args, "--json"]
+    return subprocess.run(command, cwd=REPO, capture_output=True, text=True, check=True).stdout
+
+
+def in_repo(call: Callable[[], T]) -> T:
+    """`call()` with the repository as the working directory, as the CLI runs."""
     cwd = os.getcwd()
     os.chdir(REPO)
     try:
-        data = ch.replay(recording, object_at_grasp="box:0.038:0.045", gamma=330.0, grace=0.12)
+        return call()
     finally:
         os.chdir(cwd)
+
+
+def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
+    recording = "data/leap/pinch.json.lz"
+    args = ["--object-at-grasp", "box:0.038:0.045", "--gamma", "330", "--grace", "0.12"]
+    out = cli_json("replay", recording, *args)
+    data = in_repo(
+        lambda: ch.replay(recording, object_at_grasp="box:0.038:0.045", gamma=330.0, grace=0.12)
+    )
     assert json.dumps(data, indent=2, ensure_ascii=False) + "\n" == out
     # And the run did something: the box put at the closing settled in the grip with
     # under 2 cm of drift, then fell when the hand opened.
@@ -86,6 +95,26 @@ def test_a_replay_from_python_is_the_cli_json_byte_for_byte() -> None:
     assert closing["settled_at"] is not None and closing["slipped_at"] is None
     assert closing["drift"] < 0.02 and closing["released"]
     assert data["all_finite"]
+
+
+def test_a_capture_replay_from_python_is_the_cli_json() -> None:
+    capture = "data/taco/taco_20231104_017.json"
+    args = ["--mass", "0.1,0.6", "--material", "wood"]
+    out = cli_json("replay", capture, *args)
+    data = in_repo(lambda: ch.replay_capture(capture, mass=[0.1, 0.6], material="wood"))
+    # The same data; not the same text, as Python writes 4.5e-05 where serde_json
+    # writes 0.000045.
+    assert json.loads(json.dumps(data)) == json.loads(out)
+    assert data["capture"]["frames"] == 146
+    replays = data["replays"]
+    assert [(r["material"], round(r["mass_kg"], 6)) for r in replays] == [("wood", 0.1), ("wood", 0.6)]
+    assert [len(r["frames"]) for r in replays] == [146, 146]
+    # Each starts at the first captured pose (row-major 4x4: its translation is
+    # elements 3, 7 and 11), in the capture's own frame and units.
+    pose = json.loads((REPO / capture).read_text())["object"]["poses"][0]
+    for r in replays:
+        assert np.allclose(r["frames"][0]["position"], [pose[3], pose[7], pose[11]], rtol=0, atol=1e-5)
+        assert r["score"]["all_finite"]
 
 
 def accuracy_json(args: list[str]) -> str:

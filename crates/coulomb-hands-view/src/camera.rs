@@ -244,6 +244,12 @@ impl Framing {
         let mut bounds = Bounds::default();
         let mut grasps = GraspSamples::default();
         bounds.add_world(physics.world());
+        if let Some(capture) = source.captured() {
+            // The ghost goes where the captured object went, which the
+            // simulated one may not follow.
+            let reach = capture.mesh.vertices.iter().map(|v| v.length()).fold(0.0, f32::max);
+            capture.poses.iter().for_each(|(p, _)| bounds.add(to_bevy_vec3(*p), reach));
+        }
         for i in 0..steps {
             if !physics.step() {
                 break;

@@ -9,6 +9,8 @@ use std::collections::BTreeMap;
 pub enum HudSection {
     /// What runs, its time and state ([`crate::transport`]).
     Run,
+    /// A capture's ghost and credit ([`crate::ghost`]).
+    Capture,
     /// The physics step's cost ([`crate::timing`]).
     Timing,
     /// The playback's keys ([`crate::transport`]).

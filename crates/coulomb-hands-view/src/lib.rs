@@ -11,9 +11,9 @@
 //!   by message), [`task`] (the chessboard task);
 //! - the viewer's own hands: [`mouse_hand`], [`xr_hands`] (with the runtime
 //!   itself in `openxr` under the `openxr` feature);
-//! - the picture: [`camera`], [`stage`], [`hand_visual`], [`arrows`],
-//!   [`sound`], [`ar`]; then [`hud`], whose lines each module writes, and
-//!   [`timing`].
+//! - the picture: [`camera`], [`stage`], [`ghost`] (a capture's object),
+//!   [`hand_visual`], [`arrows`], [`sound`], [`ar`]; then [`hud`], whose
+//!   lines each module writes, and [`timing`].
 //!
 //! A new world (a restart, a seek back) is the plugin's one message,
 //! [`coulomb_hands_bevy::physics::HandPhysicsReplaced`].
@@ -22,6 +22,7 @@ pub mod ar;
 pub mod arrows;
 pub mod camera;
 pub mod display;
+pub mod ghost;
 pub mod grasp_view;
 pub mod hand_visual;
 pub mod head;
@@ -209,6 +210,7 @@ impl Plugin for ViewerPlugin {
             hud::HudPlugin,
             camera::CameraPlugin,
             stage::StagePlugin,
+            ghost::GhostPlugin { draw: true },
             hand_visual::HandVisualPlugin,
             arrows::ArrowsPlugin,
             mouse_hand::MouseHandPlugin,

@@ -1,5 +1,5 @@
-//! `coulomb-hands-view [SCENARIO|RECORDING|SCENE]`: opens a window onto an
-//! interaction. With no argument, a desk scene and a hand driven by mouse
+//! `coulomb-hands-view [SCENARIO|RECORDING|CAPTURE|SCENE]`: opens a window
+//! onto an interaction. With no argument, a desk scene and a hand driven by mouse
 //! and keyboard; `--leap` or `--openxr` take live hands instead.
 
 use clap::Parser;
@@ -24,7 +24,8 @@ use std::process::ExitCode;
 #[command(name = "coulomb-hands-view", version)]
 struct Args {
     /// A shipped scenario's name (e.g. grasp-lift), or a scenario, recording
-    /// (.json.lz, .jsonl, Leap JSON) or scene file; none for the desk scene.
+    /// (.json.lz, .jsonl, Leap JSON), hand–object capture (replayed beside a
+    /// ghost of the captured object) or scene file; none for the desk scene.
     input: Option<String>,
     /// How hands move objects: coulomb (default), thesis, kinematic or heuristic.
     #[arg(long, default_value = "coulomb")]

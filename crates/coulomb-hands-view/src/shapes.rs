@@ -55,8 +55,9 @@ pub fn meshes(shape: &dyn Shape) -> Vec<(Transform, Mesh)> {
 }
 
 /// A triangle mesh with flat faces: each triangle gets its own vertices and
-/// its face normal, so hard edges stay hard.
-fn faceted(vertices: &[glam::Vec3], indices: &[[u32; 3]]) -> Mesh {
+/// its face normal, so hard edges stay hard. (Also a capture's mesh, drawn
+/// as it is: [`crate::ghost`].)
+pub fn faceted(vertices: &[glam::Vec3], indices: &[[u32; 3]]) -> Mesh {
     let mut positions = Vec::with_capacity(indices.len() * 3);
     let mut normals = Vec::with_capacity(indices.len() * 3);
     for tri in indices {

@@ -1,6 +1,6 @@
 //! What the viewer shows: a shipped or filed scenario, a tracking recording,
-//! or a scene driven by the mouse-and-keyboard hand, an XR runtime's hands
-//! or a Leap Motion service's. Each is loaded and
+//! a hand–object capture, or a scene driven by the mouse-and-keyboard hand,
+//! an XR runtime's hands or a Leap Motion service's. Each is loaded and
 //! checked once, by the core's own loaders (so a bad file is the same error
 //! as in the CLI), and can build a fresh [`HandPhysics`] from the start any
 //! number of times: a timeline scrub back in time replays from t = 0, which
@@ -9,9 +9,11 @@
 use crate::head::HeadMount;
 use coulomb_hands::eval::board::{self, Placement};
 use coulomb_hands::hand::Side;
+use coulomb_hands::input::capture::{self, Capture};
 use coulomb_hands::input::convert::Conversion;
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::pipeline::{InteractionConfig, InteractionWorld, Method};
+use coulomb_hands::run::capture::{CaptureOptions, capture_world};
 use coulomb_hands::run::closing::Closings;
 use coulomb_hands::run::live::LiveFeed;
 use coulomb_hands::run::replay::{GraspObject, ObjectPlace, replay_world};
@@ -19,6 +21,7 @@ use coulomb_hands::run::scenario::{Scenario, ScenarioHand};
 use coulomb_hands::scene::Scene;
 use coulomb_hands_bevy::physics::HandPhysics;
 use std::path::Path;
+use std::sync::Arc;
 
 /// The scene the viewer opens with no argument: a few objects on a table
 /// for the mouse hand to push, grasp and lift.
@@ -46,6 +49,23 @@ pub enum Source {
         object: Option<GraspObject>,
         /// The head the tracker was worn on, if it was (§3.8.1).
         head: Option<HeadMount>,
+    },
+    /// A hand–object capture (TACO's, say), replayed as `replay` does
+    /// ([`coulomb_hands::run::capture`]): the captured hand moves the object,
+    /// which starts at its first captured pose on a table, through contacts
+    /// alone; the captured object is drawn beside it ([`crate::ghost`]).
+    Capture {
+        /// The file's name, for the HUD.
+        name: String,
+        /// The capture: its object's mesh and poses, and the fitted hand.
+        /// Shared, as it is large and never changes (a restart clones
+        /// the source).
+        capture: Arc<Capture>,
+        /// Its hand on the world's clock.
+        playback: Box<Playback>,
+        /// The file's `source` note, which credits the data set the
+        /// capture came from (TACO's: its paper and licence), if it has one.
+        credit: Option<String>,
     },
     /// One trial of the chessboard placement task (§5.2): the board, the
     /// cube on its start square, and the mouse hand.
@@ -129,12 +149,19 @@ impl Source {
             let scene = Scene::parse("scenes/desk.json", DESK)?;
             return Ok(Source::Scene { name: "desk".into(), scene });
         };
-        let recording = !is_scenario(input) && Path::new(input).exists() && is_recording(input);
+        // A scenario may have a `hand` and an `object` as a capture has:
+        // its `hands` decide first, as the core's replay never takes one.
+        let file = Path::new(input).exists() && !is_scenario(input);
+        let capture = file && capture::is_capture_file(Path::new(input));
+        let recording = file && !capture && is_recording(input);
         if !recording && options.for_recording() {
             return Err(format!("{input}: {RECORDING_ONLY}").into());
         }
-        if !Path::new(input).exists() || is_scenario(input) {
+        if !file {
             return Ok(Source::Scenario(Box::new(Scenario::find(input)?)));
+        }
+        if capture {
+            return Source::capture(Path::new(input));
         }
         if recording {
             let recording = coulomb_hands::input::recording::load(Path::new(input))?;
@@ -161,6 +188,23 @@ impl Source {
         Ok(Source::Scene { name: input.to_string(), scene: Scene::load(Path::new(input))? })
     }
 
+    /// The capture at `path`, read by the core's loader (a bad capture is
+    /// its error, naming the file, frame and field).
+    fn capture(path: &Path) -> Result<Source, LoadError> {
+        let capture = capture::load(path)?;
+        let playback = Box::new(capture.playback()?);
+        let (name, credit) = (capture.source_name.clone(), credit(path));
+        Ok(Source::Capture { name, capture: Arc::new(capture), playback, credit })
+    }
+
+    /// The capture viewed, if it is one.
+    pub fn captured(&self) -> Option<&Capture> {
+        match self {
+            Source::Capture { capture, .. } => Some(capture),
+            _ => None,
+        }
+    }
+
     /// The head a recording's tracker was worn on, whose eyes the camera takes.
     pub fn head(&self) -> Option<&HeadMount> {
         match self {
@@ -174,6 +218,7 @@ impl Source {
         match self {
             Source::Scenario(s) => &s.name,
             Source::Recording { name, .. }
+            | Source::Capture { name, .. }
             | Source::Scene { name, .. }
             | Source::LiveXr { name, .. }
             | Source::LiveLeap { name, .. } => name,
@@ -186,7 +231,9 @@ impl Source {
     pub fn duration(&self) -> Option<f64> {
         match self {
             Source::Scenario(s) => Some(f64::from(s.duration)),
-            Source::Recording { playback, .. } => Some(playback.duration),
+            Source::Recording { playback, .. } | Source::Capture { playback, .. } => {
+                Some(playback.duration)
+            }
             Source::Scene { .. }
             | Source::LiveXr { .. }
             | Source::LiveLeap { .. }
@@ -244,12 +291,19 @@ impl Source {
             Source::Recording { playback, scene, object, .. } => {
                 // The CLI's replay world: a ground at y = 0, then the scene.
                 let mut physics = HandPhysics::new(world(scene.as_ref(), method, true)?);
-                for track in 0..playback.tracks.len() {
-                    physics.add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
-                }
+                add_recorded_hands(&mut physics, playback);
                 if let Some(object) = object {
                     physics.observe(Closings::new(playback, *object)?);
                 }
+                Ok(physics)
+            }
+            Source::Capture { capture, playback, .. } => {
+                // `replay_capture`'s world and hand: the table, the object
+                // at its first captured pose, the fitted hand's playback.
+                let options = CaptureOptions { method, ..CaptureOptions::default() };
+                let (world, _object) = capture_world(capture, &options)?;
+                let mut physics = HandPhysics::new(world);
+                add_recorded_hands(&mut physics, playback);
                 Ok(physics)
             }
             Source::LiveLeap { scene, feed, .. } => {
@@ -280,9 +334,32 @@ impl Source {
         match self {
             Source::Scene { .. } | Source::Task { .. } => &[(Side::Right, HandDriver::Mouse)],
             Source::LiveXr { .. } => &[(Side::Left, HandDriver::Xr), (Side::Right, HandDriver::Xr)],
-            Source::Scenario(_) | Source::Recording { .. } | Source::LiveLeap { .. } => &[],
+            Source::Scenario(_)
+            | Source::Recording { .. }
+            | Source::Capture { .. }
+            | Source::LiveLeap { .. } => &[],
         }
     }
+}
+
+/// Adds one hand per track of `playback`, each replaying it.
+fn add_recorded_hands(physics: &mut HandPhysics, playback: &Playback) {
+    for track in 0..playback.tracks.len() {
+        let playback = Box::new(playback.clone());
+        physics.add_hand(ScenarioHand::Recording { playback, track });
+    }
+}
+
+/// The `source` note of the capture file at `path`, a string beside its
+/// data that credits where it came from (TACO's names its paper and its
+/// licence, CC BY 4.0, which asks for that credit wherever it is shown).
+/// The core reads no notes, so the viewer reads this one itself, without
+/// parsing the file's frames a second time.
+fn credit(path: &Path) -> Option<String> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let at = text.find("\"source\"")?;
+    let value = text[at + "\"source\"".len()..].trim_start().strip_prefix(':')?;
+    serde_json::Deserializer::from_str(value).into_iter::<String>().next()?.ok()
 }
 
 /// A world under `method` with `scene` in it, on the replays' ground at

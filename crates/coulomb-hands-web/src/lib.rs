@@ -132,6 +132,28 @@ impl World {
         Ok(World { sim: js(Sim::recording(file, bytes, object.as_deref()))? })
     }
 
+    /// A hand–object capture's JSON text (`file` names it in errors) and
+    /// the bytes of the mesh it names, replayed as `coulomb-hands replay`
+    /// replays one: the captured hand moves the object through contacts;
+    /// the captured object is `ghostPose()` and `ghostMesh()`.
+    pub fn capture(file: &str, json: &str, mesh: &[u8]) -> Result<World, JsError> {
+        Ok(World { sim: js(Sim::capture(file, json, mesh))? })
+    }
+
+    /// A capture's captured object at the world's time: position (3, m)
+    /// and rotation (4, x, y, z, w); empty for any other run.
+    #[wasm_bindgen(js_name = ghostPose)]
+    pub fn ghost_pose(&self) -> Vec<f32> {
+        self.sim.ghost_pose()
+    }
+
+    /// A capture's captured object's triangles in its own frame (9 numbers
+    /// each); empty for any other run.
+    #[wasm_bindgen(js_name = ghostMesh)]
+    pub fn ghost_mesh(&self) -> Vec<f32> {
+        self.sim.ghost_mesh()
+    }
+
     /// Its name: the scenario's, the recording's, `demo`, `desk`.
     #[wasm_bindgen(getter)]
     pub fn name(&self) -> String {

@@ -6,9 +6,11 @@
 use crate::arrays;
 use coulomb_hands::files::NoFiles;
 use coulomb_hands::hand::rig::HandRig;
+use coulomb_hands::input::capture;
 use coulomb_hands::input::layouts::{self, Layout};
-use coulomb_hands::input::playback::DEFAULT_GRACE;
+use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
 use coulomb_hands::input::recording;
+use coulomb_hands::run::capture::{CaptureOptions, capture_world};
 use coulomb_hands::run::closing::Closings;
 use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::run::drive::{Driver, Observer, PoseFn};
@@ -22,7 +24,7 @@ use coulomb_hands::{
     HandId, InteractionConfig, InteractionWorld, Material, ObjectDesc, ObjectId, ShapeDesc, Side,
     StaticDesc, WorldError,
 };
-use glam::Vec3;
+use glam::{Quat, Vec3};
 use std::path::Path;
 
 /// An error as the page shows it: the library's message.
@@ -49,6 +51,40 @@ enum Script {
     Scenario { report: ReportInputs },
     /// A recording, with an object at each closing and its verdicts.
     Recording { closings: Option<Box<Closings>> },
+    /// A hand–object capture's hand, with the captured object drawn as a ghost.
+    Capture { ghost: Box<Ghost> },
+}
+
+/// The captured object of a hand–object capture: its mesh, and its pose
+/// frame by frame, which the page draws beside the simulated object.
+pub struct Ghost {
+    /// The object's mesh in its own frame (m).
+    mesh: TriangleMesh,
+    /// Its captured pose per frame (world, m), at least two.
+    poses: Vec<(Vec3, Quat)>,
+    /// Frames a second.
+    frame_rate_hz: f64,
+}
+
+impl Ghost {
+    /// The captured pose at time `t` (s): between the two frames about
+    /// `t`, the position linear and the rotation by slerp; before the first
+    /// frame the first pose, after the last the last.
+    pub fn pose_at(&self, t: f64) -> (Vec3, Quat) {
+        let last = self.poses.len() - 1;
+        let frame = (t * self.frame_rate_hz).clamp(0.0, last as f64);
+        let before = (frame as usize).min(last - 1);
+        let s = (frame - before as f64) as f32;
+        let (from, to) = (self.poses[before], self.poses[before + 1]);
+        (from.0.lerp(to.0, s), from.1.slerp(to.1, s).normalize())
+    }
+
+    /// Its mesh's triangles in its own frame, 9 numbers each, as the
+    /// page's `objectMesh` gives an object's.
+    pub fn triangles(&self) -> Vec<f32> {
+        let corner = |i: &u32| self.mesh.vertices[*i as usize].to_array();
+        self.mesh.triangles.iter().flatten().flat_map(corner).collect()
+    }
 }
 
 /// A scenario's name, checks and the history they measure.
@@ -175,15 +211,58 @@ impl Sim {
         let world = text(replay_world(InteractionConfig::default(), false))?;
         let closings =
             object.map(|o| text(Closings::new(&playback, o)).map(Box::new)).transpose()?;
-        // The CLI's replay runs its whole duration and one step more.
-        let steps = (playback.duration / f64::from(world.config().dt)).floor() as usize + 1;
         let script = Script::Recording { closings };
-        let mut sim = Sim::new(world, script, Some(steps), &recording.source_name);
+        Ok(Sim::of_playback(world, playback, script, &recording.source_name))
+    }
+
+    /// A hand–object capture's text (`file` names it in errors) and the
+    /// bytes of the mesh it names, replayed as `coulomb-hands replay` replays
+    /// a capture: the object at its first captured pose on a table, moved
+    /// by the captured hand through contacts alone. The captured object is
+    /// [`Sim::ghost_pose`] and [`Sim::ghost_mesh`].
+    pub fn capture(file: &str, json: &str, mesh_bytes: &[u8]) -> Result<Sim, Error> {
+        let mesh =
+            |name: &str| TriangleMesh::from_bytes(name, mesh_bytes).map_err(|e| e.to_string());
+        let captured = text(capture::parse(file, json, &mesh))?;
+        let playback = text(captured.playback())?;
+        let (world, _) = text(capture_world(&captured, &CaptureOptions::default()))?;
+        let capture::Capture { mesh, poses, frame_rate_hz, source_name, .. } = captured;
+        let script = Script::Capture { ghost: Box::new(Ghost { mesh, poses, frame_rate_hz }) };
+        Ok(Sim::of_playback(world, playback, script, &source_name))
+    }
+
+    /// `world` driven by every hand of `playback` for its whole duration and
+    /// one step more, as the CLI's replay runs.
+    fn of_playback(world: InteractionWorld, playback: Playback, script: Script, name: &str) -> Sim {
+        let steps = (playback.duration / f64::from(world.config().dt)).floor() as usize + 1;
+        let mut sim = Sim::new(world, script, Some(steps), name);
         let playback = Box::new(playback);
         for track in 0..playback.tracks.len() {
             sim.driver.add_hand(ScenarioHand::Recording { playback: playback.clone(), track });
         }
-        Ok(sim)
+        sim
+    }
+
+    /// A capture's captured object, or `None` for any other run.
+    pub fn ghost(&self) -> Option<&Ghost> {
+        match &self.script {
+            Script::Capture { ghost } => Some(ghost),
+            _ => None,
+        }
+    }
+
+    /// The captured object's pose at the world's time: position (3 numbers,
+    /// m) and rotation (x, y, z, w); empty for a run that is no capture.
+    pub fn ghost_pose(&self) -> Vec<f32> {
+        let Some(ghost) = self.ghost() else { return Vec::new() };
+        let (position, rotation) = ghost.pose_at(self.world().time());
+        position.to_array().into_iter().chain(rotation.to_array()).collect()
+    }
+
+    /// The captured object's triangles in its own frame (9 numbers each);
+    /// empty for a run that is no capture.
+    pub fn ghost_mesh(&self) -> Vec<f32> {
+        self.ghost().map(Ghost::triangles).unwrap_or_default()
     }
 
     /// Its name: the scenario's, the recording's, `demo`, `desk`.
@@ -219,7 +298,9 @@ impl Sim {
         let mut run = 0;
         for _ in 0..n.min(left) {
             let mut observers: Vec<&mut dyn Observer> = match &mut self.script {
-                Script::Free | Script::Recording { closings: None } => Vec::new(),
+                Script::Free | Script::Recording { closings: None } | Script::Capture { .. } => {
+                    Vec::new()
+                }
                 Script::Scenario { report } => vec![&mut *report.history],
                 Script::Recording { closings: Some(c) } => vec![&mut **c],
             };

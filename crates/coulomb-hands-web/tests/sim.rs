@@ -1,15 +1,18 @@
 //! The page's API natively: what it runs is what the library runs, bit for
 //! bit, and bad input is the library's error, leaving the world as it was.
 
-use coulomb_hands::input::recording;
+use coulomb_hands::input::{capture, recording};
 use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::run::replay::{ReplayOptions, replay_recording};
 use coulomb_hands::run::scenario::Scenario;
+use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::{InteractionConfig, ObjectId};
 use coulomb_hands_web::arrays;
 use coulomb_hands_web::sim::{self, Sim};
 
 const GRAB: &[u8] = include_bytes!("../../../data/leap/grab.json.lz");
+const TACO: &str = include_str!("../../../data/taco/taco_20231104_017.json");
+const TACO_MESH: &[u8] = include_bytes!("../../../data/taco/taco_20231104_017.obj");
 
 fn state(sim: &Sim, id: u32) -> coulomb_hands::ObjectState {
     sim.world().object_state(ObjectId(id)).expect("an object")
@@ -60,6 +63,29 @@ fn a_recording_is_replayed_with_its_closings_verdicts_as_replay_gives_them() {
     assert!(!summary.closings.is_empty());
     let lines: Vec<String> = summary.closings.iter().map(ToString::to_string).collect();
     assert_eq!(page.verdict_lines(), lines, "the CLI's lines");
+}
+
+#[test]
+fn a_capture_lifts_its_object_with_the_captured_one_as_a_ghost() {
+    let mut page = Sim::capture("taco.json", TACO, TACO_MESH).expect("the page's capture");
+    let captured = capture::parse("taco.json", TACO, &|file| {
+        TriangleMesh::from_bytes(file, TACO_MESH).map_err(|e| e.to_string())
+    })
+    .expect("a capture");
+    let ghost = page.ghost_pose();
+    let (position, rotation) = captured.poses[0];
+    assert_eq!(ghost[..3], position.to_array(), "the first captured position");
+    let turn = glam::Quat::from_slice(&ghost[3..]);
+    assert!(turn.dot(rotation).abs() > 1.0 - 1e-6, "the first captured rotation: {turn}");
+    assert_eq!(page.ghost_mesh().len(), captured.mesh.triangles.len() * 9);
+    assert_eq!(page.world().object_count(), 1, "the simulated object");
+    let start = state(&page, 0).position;
+    // 1.3 s: the captured object has risen about 60 mm by 1.2 s, 97 mm by 1.33 s.
+    assert_eq!(page.step(1300), Ok(1300));
+    let risen = page.ghost_pose()[1] - position.y;
+    assert!(risen > 0.05, "the ghost rose {risen} m");
+    let moved = state(&page, 0).position - start;
+    assert!(moved.length() > 0.005, "the hand moved the object: {moved}");
 }
 
 #[test]
@@ -121,8 +147,17 @@ fn bad_input_is_the_librarys_message_and_changes_nothing() {
     assert!(mesh.unwrap_err().contains("m.obj"));
     let material = desk.add_box("b", &[0.1; 3], 0.1, &[0.0; 3], &[], "cheese").unwrap_err();
     assert!(material.contains("cheese") && material.contains("wood"), "{material}");
+    let rate = TACO.replacen("\"frame_rate_hz\":30.0", "\"frame_rate_hz\":-1", 1);
+    let bad_capture = Sim::capture("taco.json", &rate, TACO_MESH).err().expect("bad");
+    assert!(
+        bad_capture.contains("taco.json") && bad_capture.contains("frame_rate_hz"),
+        "{bad_capture}"
+    );
+    let bad_mesh = Sim::capture("taco.json", TACO, b"v 1 2").err().expect("bad");
+    assert!(bad_mesh.contains("object.mesh"), "{bad_mesh}");
     assert_eq!(desk.world().object_count(), 4, "nothing added");
     assert!(desk.world().hand_pose(coulomb_hands::HandId(hand)).is_none(), "nothing posed");
+    assert!(desk.ghost_pose().is_empty() && desk.ghost_mesh().is_empty(), "no capture, no ghost");
     assert!(sim::config("{\"dt\": -1}").is_err());
     assert!(sim::config("{\"nope\": 1}").unwrap_err().starts_with("config:"));
 }

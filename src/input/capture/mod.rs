@@ -104,13 +104,14 @@ struct RawObject {
     poses: Vec<Vec<f64>>,
 }
 
-/// Whether `path` looks like a capture: a `.json` file whose text has an
-/// `"object"` beside a `"hand"` (a Leap recording has neither).
+/// Whether `path` looks like a capture: a `.json` file whose text has a
+/// `"frame_rate_hz"`, a `"hand"` and an `"object"` (a Leap recording has
+/// none of them; a scenario or a session no frame rate).
 pub fn is_capture_file(path: &Path) -> bool {
     let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
     json && std::fs::read(path).is_ok_and(|bytes| {
         let has = |key: &[u8]| bytes.windows(key.len()).any(|w| w == key);
-        has(b"\"object\"") && has(b"\"hand\"")
+        has(b"\"frame_rate_hz\"") && has(b"\"object\"") && has(b"\"hand\"")
     })
 }
 

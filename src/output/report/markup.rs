@@ -1,5 +1,5 @@
-//! The page's HTML pieces that every section uses: escaped text, tables
-//! and captioned plots.
+//! The page's HTML pieces that every section uses: escaped text, numbers,
+//! tables and captioned plots.
 
 use std::fmt::Write;
 
@@ -17,6 +17,16 @@ pub fn escape(text: &str) -> String {
         }
     }
     out
+}
+
+/// `v` with `decimals`, or `—` if it is not finite.
+pub(crate) fn num(v: f64, decimals: usize) -> String {
+    if v.is_finite() { format!("{v:.decimals$}") } else { "—".to_string() }
+}
+
+/// A right-aligned number cell for [`table`].
+pub(crate) fn cell(v: f64, decimals: usize) -> String {
+    format!("#{}", num(v, decimals))
 }
 
 /// A table: `head` cells (none: no head row), then rows of cells already in HTML (`num`

@@ -1,29 +1,33 @@
 //! The HTML report of `coulomb-hands report`: one self-contained page
 //! (inline CSS and SVG plots, nothing loaded from anywhere) with the
 //! placement-accuracy study (thesis Table 5.2), the step-time benchmark
-//! (Fig. 5.6), the shipped scenarios, the bundled replays, and the
-//! placement study swept over tracking noise and the thesis's law given
-//! its departures back one at a time.
+//! (Fig. 5.6), the shipped scenarios, the bundled replays, the placement
+//! study swept over tracking noise, the thesis's law given its departures
+//! back one at a time, and a real hand–object capture replayed with each
+//! method.
 //!
 //! [`html`] is a pure function from a [`ReportData`] to the page's text.
 //! Every section is optional: a missing one says how to produce it. The
 //! data types here are plain numbers and text, and they are what the runs
 //! produce: `eval` builds the [`AccuracyStudy`], `run::bench` the
-//! [`BenchReport`] and the `run` stage the scenario and replay runs; their
-//! JSON reads back with [`AccuracyStudy::load`] and [`BenchReport::load`]. Nothing
-//! in the data can make the page builder panic: non-finite numbers are
+//! [`BenchReport`] (their JSON reads back with [`AccuracyStudy::load`] and
+//! [`BenchReport::load`]) and the `run` stage the scenario, replay and
+//! capture runs. Nothing in the data can make the page builder panic: non-finite numbers are
 //! shown as `—`, they and any beyond 10¹² are left out of plots, and empty
 //! lists give empty plots.
 
+mod capture_page;
 mod markup;
 mod page;
 mod plots;
 pub(crate) use plots::quantile;
+mod scenario_plot;
 mod study;
 mod study_page;
 #[cfg(test)]
 mod tests;
 
+pub use capture_page::{capture_errors, capture_heights};
 pub use page::html;
 pub use study::{
     Ablation, AblationRow, Estimate, LatencyRow, LatencyStudy, NoiseSummary, SweepRow, SweepStudy,
@@ -50,6 +54,8 @@ pub struct ReportData {
     pub scenarios: Option<Sourced<Vec<ScenarioRun>>>,
     /// The recordings replayed.
     pub replays: Option<Sourced<Vec<ReplayRun>>>,
+    /// The bundled hand–object capture replayed with each method.
+    pub captures: Option<Sourced<CaptureRuns>>,
 }
 
 /// A section's data and, in a sentence, where it came from.
@@ -351,6 +357,57 @@ pub struct ReplayObject {
     pub displacement_m: f64,
     /// Top speed (m/s).
     pub max_speed_m_s: f64,
+}
+
+/// A hand–object capture replayed with each method: a real hand moving a
+/// real object, and how far each method's object followed it.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct CaptureRuns {
+    /// The capture's file.
+    pub capture: String,
+    /// Whose data it is and under which licence, shown with its figures.
+    pub credit: String,
+    /// The object's mass in every replay (kg; the capture gives none).
+    pub mass_kg: f32,
+    /// The skin–object material in every replay.
+    pub material: String,
+    /// Each captured frame's time (s).
+    pub time_s: Vec<f64>,
+    /// The captured object's height above its first pose at each frame (mm).
+    pub captured_height_mm: Vec<f32>,
+    /// One replay per method.
+    pub methods: Vec<CaptureMethodRun>,
+}
+
+/// The capture replayed with one method.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct CaptureMethodRun {
+    /// `coulomb`, `thesis`, `kinematic` or `heuristic`.
+    pub method: String,
+    /// Why the replay stopped, if it did not finish.
+    pub error: Option<String>,
+    /// Mean translation error over the frames after the first (mm).
+    pub translation_mean_mm: f64,
+    /// Largest translation error (mm).
+    pub translation_max_mm: f64,
+    /// Mean rotation error over the frames after the first (°).
+    pub rotation_mean_deg: f64,
+    /// Largest rotation error (°).
+    pub rotation_max_deg: f64,
+    /// The simulated object's highest rise above its first pose (mm).
+    pub simulated_lift_mm: f64,
+    /// The captured object's highest rise above its first pose (mm).
+    pub captured_lift_mm: f64,
+    /// Whether the replay met the targets (`CaptureScore::on_target`):
+    /// lifted at least half as high as the captured object, set down within
+    /// 1 cm of its height, translation error at most 10 mm on average and
+    /// 30 mm at worst, rotation error at most 5° and 15°.
+    pub on_target: bool,
+    /// The simulated object's height above its first pose at each captured
+    /// frame (mm), in the order of [`CaptureRuns::time_s`].
+    pub simulated_height_mm: Vec<f32>,
+    /// Its distance from the captured object at each captured frame (mm).
+    pub translation_error_mm: Vec<f32>,
 }
 
 impl MethodResult {

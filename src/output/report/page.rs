@@ -1,8 +1,10 @@
 //! The report page: [`html`] turns a [`ReportData`] into one HTML file
 //! with inline CSS and SVG, and nothing loaded from elsewhere.
 
-use super::markup::{escape, plot, plot_with_legend, table};
+use super::capture_page::{self, CAPTURE_FILE};
+use super::markup::{cell, escape, num, plot, plot_with_legend, table};
 use super::plots;
+use super::scenario_plot;
 use super::study_page::{self, ABLATION_COMMAND, SWEEP_COMMAND};
 use super::{
     AccuracyStudy, BenchReport, Header, ObjectsPoint, ReplayRun, ReportData, ScenarioRun, Sourced,
@@ -11,18 +13,19 @@ use super::{
 use std::fmt::Write;
 
 /// The sections' headings, in page order.
-pub const SECTIONS: [&str; 6] = [
+pub const SECTIONS: [&str; 7] = [
     "1. Placement accuracy (thesis Table 5.2)",
     "2. Placement under tracking noise",
     "3. The thesis's law, departure by departure",
     "4. Performance (thesis Fig. 5.6)",
     "5. Scenarios",
     "6. Replays",
+    "7. Real hands moving real objects",
 ];
 
 /// The sections' anchors, in page order.
-const SECTION_IDS: [&str; 6] =
-    ["accuracy", "noise", "ablation", "performance", "scenarios", "replays"];
+const SECTION_IDS: [&str; 7] =
+    ["accuracy", "noise", "ablation", "performance", "scenarios", "replays", "captures"];
 
 /// The command that writes the accuracy study's JSON.
 pub const ACCURACY_COMMAND: &str = "coulomb-hands eval accuracy --json > accuracy.json";
@@ -90,13 +93,18 @@ pub fn html(data: &ReportData) -> String {
     section(&mut p, 5, data.replays.as_ref(), replays, |p| {
         absent(p, "no recordings were replayed.", None);
     });
+    section(&mut p, 6, data.captures.as_ref(), capture_page::captures, |p| {
+        let _ = writeln!(
+            p,
+            "<p class=\"absent\">Not in this report: the bundled hand–object capture, \
+             <code>{CAPTURE_FILE}</code>, is not beside this build (it is in the repository, \
+             not in the published crate). Run <code>coulomb-hands report</code> built from the \
+             repository, or replay it with one method with <code>coulomb-hands replay \
+             {CAPTURE_FILE} --method METHOD</code>.</p>"
+        );
+    });
     p.push_str("</body>\n</html>\n");
     p
-}
-
-/// `v` with `decimals`, or `—` if it is not finite.
-fn num(v: f64, decimals: usize) -> String {
-    if v.is_finite() { format!("{v:.decimals$}") } else { "—".to_string() }
 }
 
 /// `mean ± sd / median`.
@@ -112,11 +120,6 @@ fn slug(prefix: &str, name: &str) -> String {
 
 fn verdict_class(passed: bool) -> (&'static str, &'static str) {
     if passed { ("pass", "pass") } else { ("fail", "FAIL") }
-}
-
-/// A right-aligned number cell for [`table`].
-fn cell(v: f64, decimals: usize) -> String {
-    format!("#{}", num(v, decimals))
 }
 
 /// Section `i` ([`SECTIONS`]): its heading, then where its data came from
@@ -184,6 +187,7 @@ fn header(p: &mut String, data: &ReportData) {
         (SECTIONS[3], data.bench.as_ref().map(|s| &s.source)),
         (SECTIONS[4], data.scenarios.as_ref().map(|s| &s.source)),
         (SECTIONS[5], data.replays.as_ref().map(|s| &s.source)),
+        (SECTIONS[6], data.captures.as_ref().map(|s| &s.source)),
     ];
     for (i, (name, source)) in sources.iter().enumerate() {
         let id = SECTION_IDS[i];
@@ -462,12 +466,12 @@ fn scenarios(p: &mut String, runs: &Vec<ScenarioRun>) {
             let _ = writeln!(p, "<p class=\"fail\">The run stopped: {}</p>", escape(e));
         }
         p.push_str("<div class=\"row\">\n");
-        let shown = plots::shown_objects(r);
+        let shown = scenario_plot::shown_objects(r);
         let legend: Vec<String> = shown
             .iter()
             .enumerate()
             .map(|(k, o)| {
-                let color = plots::line_color(k);
+                let color = scenario_plot::line_color(k);
                 format!("<span style=\"color:{color}\">&#9632;</span>&nbsp;{}", escape(&o.name))
             })
             .collect();
@@ -484,7 +488,7 @@ fn scenarios(p: &mut String, runs: &Vec<ScenarioRun>) {
             );
         }
         let legend = format!("<span class=\"legend\">{}</span> ", legend.join(" &nbsp; "));
-        plot_with_legend(p, &plots::scenario(r), &legend, &caption);
+        plot_with_legend(p, &scenario_plot::scenario(r), &legend, &caption);
         verdicts(p, &r.checks);
         p.push_str("</div>\n</div>\n");
     }

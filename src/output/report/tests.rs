@@ -1,6 +1,7 @@
 //! The page builder with every section absent and present, bad numbers,
 //! and the two JSON inputs.
 
+use super::capture_page::CAPTURE_FILE;
 use super::page::{ACCURACY_COMMAND, BENCH_COMMAND, SECTIONS};
 use super::study_page::{ABLATION_COMMAND, SWEEP_COMMAND};
 use super::*;
@@ -103,6 +104,38 @@ fn scenario(name: &str, objects: usize) -> ScenarioRun {
     }
 }
 
+/// A capture replayed by three methods over 50 frames: one lifts the object
+/// with the capture, one leaves it on the table, one stopped.
+fn captures() -> CaptureRuns {
+    let time_s: Vec<f64> = (0..50).map(|i| f64::from(i) / 30.0).collect();
+    let lift = |i: usize| (200.0 * (i as f32 / 49.0 * std::f32::consts::PI).sin()).max(0.0);
+    let captured_height_mm: Vec<f32> = (0..50).map(lift).collect();
+    let method = |name: &str, held: bool| CaptureMethodRun {
+        method: name.into(),
+        simulated_height_mm: (0..50).map(|i| if held { lift(i) + 5.0 } else { -2.0 }).collect(),
+        translation_error_mm: (0..50).map(|i| if held { 5.0 } else { lift(i) }).collect(),
+        translation_mean_mm: if held { 5.0 } else { 120.0 },
+        captured_lift_mm: 200.0,
+        simulated_lift_mm: if held { 205.0 } else { 0.0 },
+        on_target: held,
+        ..CaptureMethodRun::default()
+    };
+    let stopped = CaptureMethodRun {
+        method: "thesis".into(),
+        error: Some("the world rejected <a> call".into()),
+        ..CaptureMethodRun::default()
+    };
+    CaptureRuns {
+        capture: "data/taco/a <capture>.json".into(),
+        credit: "TACO (Liu et al., CVPR 2024), CC BY 4.0".into(),
+        mass_kg: 0.3,
+        material: "wood".into(),
+        time_s,
+        captured_height_mm,
+        methods: vec![method("coulomb", false), stopped, method("kinematic", true)],
+    }
+}
+
 fn full() -> ReportData {
     let sourced = |source: &str| source.to_string();
     ReportData {
@@ -142,6 +175,7 @@ fn full() -> ReportData {
                 },
             ],
         }),
+        captures: Some(Sourced { source: sourced("replayed here"), data: captures() }),
     }
 }
 
@@ -160,6 +194,9 @@ fn with_every_section_absent_the_page_says_how_to_make_them() {
     }
     assert!(page.contains("--accuracy accuracy.json") && page.contains("--bench bench.json"));
     assert!(page.contains("--sweep sweep.json") && page.contains("--ablation ablation.json"));
+    let replay = format!("coulomb-hands replay {CAPTURE_FILE} --method METHOD");
+    assert!(page.contains(&replay), "how to replay the capture");
+    assert_eq!(page.matches("class=\"absent\"").count(), SECTIONS.len());
     assert_self_contained(&page);
 }
 
@@ -170,8 +207,16 @@ fn with_every_section_present_there_is_one_svg_per_plot() {
         assert!(page.contains(&markup::escape(heading)), "{heading}");
     }
     // Accuracy 1, noise 4 (error and drops, lift and slide), performance 3
-    // (linear, log, reference), one per scenario.
-    assert_eq!(svgs(&page), 1 + 4 + 3 + 2);
+    // (linear, log, reference), one per scenario, the capture's 2.
+    assert_eq!(svgs(&page), 1 + 4 + 3 + 2 + 2);
+    assert!(page.contains("Object height: captured and simulated"));
+    assert!(page.contains("Distance from the captured object"));
+    assert!(page.contains("data/taco/a &lt;capture&gt;.json") && page.contains("0.3 kg"));
+    assert!(page.contains("thesis: the replay stopped: the world rejected &lt;a&gt; call"));
+    assert!(page.contains("Capture data: TACO (Liu et al., CVPR 2024), CC BY 4.0."));
+    let rows = ["<tr><td>coulomb</td>", "<tr><td>thesis</td>", "<tr><td>kinematic</td>"];
+    assert!(rows.iter().all(|r| page.contains(r)), "a row per method");
+    assert_eq!(page.matches("<span class=\"pass\">yes</span>").count(), 1, "on target");
     for text in THESIS_NUMBERS {
         assert!(page.contains(text), "{text}");
     }
@@ -212,23 +257,33 @@ fn bad_numbers_and_empty_data_neither_panic_nor_lose_plots() {
     runs[0].objects[0].height_m = vec![f32::NAN; 3];
     runs[1].objects.clear();
     runs[1].error = Some("the world rejected a call".into());
+    let capture = &mut data.captures.as_mut().unwrap().data;
+    capture.time_s[3] = f64::NAN;
+    capture.captured_height_mm[7] = f32::INFINITY;
+    capture.methods[0].simulated_height_mm = vec![f32::MAX, f32::NAN];
+    capture.methods[2].translation_error_mm.clear();
+    capture.methods[2].rotation_max_deg = f64::NAN;
+    capture.mass_kg = f32::NAN;
     let sweep = &mut data.sweep.as_mut().unwrap().data;
     sweep.rows[0].error_mm = Estimate { value: f64::MAX, low: f64::NAN, high: f64::INFINITY };
     sweep.rows[1].noise = f32::NAN;
     let page = html(&data);
-    assert_eq!(svgs(&page), 10, "{}", page.matches("could not be drawn").count());
+    assert_eq!(svgs(&page), 12, "{}", page.matches("could not be drawn").count());
+    assert!(page.contains("of — kg"));
     assert!(page.contains("The run stopped: the world rejected a call"));
     // With no thesis rows in the study, the published ones are shown.
     assert!(THESIS_NUMBERS.iter().all(|t| page.contains(t)));
     let huge =
         ThesisResult { method: "coulomb".into(), mean_mm: f64::MAX, sd_mm: 1.0, median_mm: 1.0 };
     data.accuracy.as_mut().unwrap().data.thesis = vec![huge];
-    assert_eq!(svgs(&html(&data)), 10);
+    assert_eq!(svgs(&html(&data)), 12);
     data.bench.as_mut().unwrap().data.sweep.clear();
     data.accuracy.as_mut().unwrap().data.methods.clear();
     data.sweep.as_mut().unwrap().data.rows.clear();
-    // No rows: no strategies to plot.
-    assert_eq!(svgs(&html(&data)), 6);
+    let capture = &mut data.captures.as_mut().unwrap().data;
+    (capture.time_s, capture.methods) = (Vec::new(), Vec::new());
+    // No rows: no strategies to plot; an empty capture gives empty axes.
+    assert_eq!(svgs(&html(&data)), 8);
 }
 
 #[test]

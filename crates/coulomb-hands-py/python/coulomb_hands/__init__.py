@@ -35,6 +35,7 @@ from ._coulomb_hands import (
     load_recording,
     mediapipe_to_y_up,
     replay,
+    replay_capture,
     run_scenario,
 )
 
@@ -75,5 +76,6 @@ __all__ = [
     "load_recording",
     "mediapipe_to_y_up",
     "replay",
+    "replay_capture",
     "run_scenario",
 ]

@@ -292,6 +292,20 @@ def replay(
     headlessly, as `coulomb-hands replay FILE --json` does with the same options
     (`object_at_grasp` as "box:0.045:0.05"); returns its JSON's data."""
 
+def replay_capture(
+    path: Path,
+    *,
+    method: str = "coulomb",
+    mass: Optional[Union[float, Sequence[float]]] = None,
+    material: Optional[Union[str, Sequence[str]]] = None,
+    gamma: Optional[Gamma] = None,
+) -> dict[str, Any]:
+    """Replays a hand-object capture (its object at its first captured pose, moved by the
+    captured hand through contacts alone) once for every material and mass (kg) given, 0.3
+    kg and wood when None, as `coulomb-hands replay CAPTURE --mass ... --material ... --json`
+    does; returns its JSON's data, {"capture": {...}, "replays": [...]}, materials
+    outermost. A mass that is not positive or an unknown material raises `StudyError`."""
+
 def run_scenario(name_or_path: str, method: str = "coulomb") -> dict[str, Any]:
     """Runs a shipped scenario by name (e.g. "push") or a scenario file; returns
     `coulomb-hands scenario NAME --json`'s data, {"scenarios": [report]}."""

@@ -3,6 +3,7 @@
 
 mod ar;
 mod camera;
+mod ghost;
 mod hand_visual;
 mod head;
 mod keys;
