@@ -254,3 +254,15 @@ fn a_real_object_rests_on_its_table_until_the_hand_reaches_it() {
         assert!((f64::from(p[i]) - pose0[k]).abs() < 1e-5, "{p:?} against {pose0:?}");
     }
 }
+
+#[test]
+fn the_captured_pose_between_frames_is_interpolated_and_held_at_the_ends() {
+    let c = taco();
+    let (a, b) = (c.poses[36], c.poses[37]);
+    let (p, q) = c.pose_at((36.0 + 0.25) / 30.0);
+    assert!(p.distance(a.0.lerp(b.0, 0.25)) < 1e-6);
+    assert!(q.angle_between(a.1.slerp(b.1, 0.25)) < 1e-4);
+    assert_eq!(c.pose_at(-1.0), c.poses[0]);
+    assert_eq!(c.pose_at(f64::NAN), c.poses[0]);
+    assert_eq!(c.pose_at(99.0), c.poses[145]);
+}

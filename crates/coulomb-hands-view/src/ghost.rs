@@ -14,7 +14,6 @@ use crate::source::Source;
 use crate::transport::Viewed;
 use bevy::light::NotShadowCaster;
 use bevy::prelude::*;
-use coulomb_hands::input::capture::Capture;
 use coulomb_hands_bevy::convert;
 use coulomb_hands_bevy::prelude::*;
 
@@ -27,24 +26,6 @@ pub const GHOST: Color = Color::srgba(0.62, 0.80, 1.0, 0.35);
 /// capture plays).
 #[derive(Component, Debug, Clone, Copy)]
 pub struct Ghost;
-
-/// The captured object's pose at time `t` (s; world, m): between the two
-/// captured frames about `t`, the position interpolated linearly and the
-/// rotation by slerp; the first pose before the start and the last after
-/// the end, where the capture holds it.
-pub fn captured_pose(capture: &Capture, t: f64) -> (glam::Vec3, glam::Quat) {
-    let poses = &capture.poses;
-    // NaN and negative times go to frame 0 (`max` takes the number).
-    let at = (t * capture.frame_rate_hz).max(0.0);
-    let i = at.floor() as usize;
-    match (poses.get(i), poses.get(i + 1)) {
-        (Some(a), Some(b)) => {
-            let s = (at - i as f64) as f32;
-            (a.0.lerp(b.0, s), a.1.slerp(b.1, s))
-        }
-        _ => poses.last().copied().unwrap_or_default(),
-    }
-}
 
 /// Spawns the ghost when a capture plays, and puts it at the captured pose
 /// of the physics time each frame; removes it when the source is not a
@@ -59,7 +40,7 @@ pub fn place_ghost(
         ghosts.iter().for_each(|(e, _)| commands.entity(e).despawn());
         return;
     };
-    let (position, rotation) = captured_pose(capture, physics.world().time());
+    let (position, rotation) = capture.pose_at(physics.world().time());
     let place = convert::transform(position, rotation);
     match ghosts.iter_mut().next() {
         Some((_, mut transform)) => *transform = place,
@@ -102,7 +83,7 @@ pub fn hud_lines(
 ) {
     let (Some(capture), Some(physics)) = (viewed.source.captured(), physics) else { return };
     let world = physics.world();
-    let (captured, _) = captured_pose(capture, world.time());
+    let (captured, _) = capture.pose_at(world.time());
     // A capture's world has one object: the captured one's simulated twin.
     let state = world.object_ids().next().and_then(|id| world.object_state(id).ok());
     let error = state.map_or(String::new(), |s| {

@@ -71,12 +71,7 @@ impl Ghost {
     /// `t`, the position linear and the rotation by slerp; before the first
     /// frame the first pose, after the last the last.
     pub fn pose_at(&self, t: f64) -> (Vec3, Quat) {
-        let last = self.poses.len() - 1;
-        let frame = (t * self.frame_rate_hz).clamp(0.0, last as f64);
-        let before = (frame as usize).min(last - 1);
-        let s = (frame - before as f64) as f32;
-        let (from, to) = (self.poses[before], self.poses[before + 1]);
-        (from.0.lerp(to.0, s), from.1.slerp(to.1, s).normalize())
+        capture::pose_at(&self.poses, self.frame_rate_hz, t)
     }
 
     /// Its mesh's triangles in its own frame, 9 numbers each, as the

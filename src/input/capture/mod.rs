@@ -198,10 +198,35 @@ pub fn parse(
     })
 }
 
+/// A captured object's pose at time `t` (s) from its `poses` at
+/// `frame_rate_hz`: between the two frames about `t`, the position
+/// interpolated linearly and the rotation by slerp; the first pose before
+/// the start (and for a time that is not a number), the last after the
+/// end, where the capture holds it. What a viewer draws as the captured
+/// object; the replay itself never reads it.
+pub fn pose_at(poses: &[(Vec3, Quat)], frame_rate_hz: f64, t: f64) -> (Vec3, Quat) {
+    // `max` takes the number: NaN and negative times are frame 0.
+    let at = (t * frame_rate_hz).max(0.0);
+    let i = at.floor() as usize;
+    match (poses.get(i), poses.get(i + 1)) {
+        (Some(a), Some(b)) if at > i as f64 => {
+            let s = (at - i as f64) as f32;
+            (a.0.lerp(b.0, s), a.1.slerp(b.1, s).normalize())
+        }
+        (Some(a), Some(_)) => *a,
+        _ => poses.last().copied().unwrap_or_default(),
+    }
+}
+
 impl Capture {
     /// The time of frame `i` (s).
     pub fn time(&self, i: usize) -> f64 {
         i as f64 / self.frame_rate_hz
+    }
+
+    /// The captured object's pose at time `t` (s) ([`pose_at`]).
+    pub fn pose_at(&self, t: f64) -> (Vec3, Quat) {
+        pose_at(&self.poses, self.frame_rate_hz, t)
     }
 
     /// The hand as a playback, one tracked hand per frame. Between frames

@@ -12,7 +12,7 @@ use coulomb_hands::run::capture::{CaptureOptions, replay_capture};
 use coulomb_hands::scene::ObjectId;
 use coulomb_hands_bevy::convert::to_core_vec3;
 use coulomb_hands_bevy::physics::HandPhysics;
-use coulomb_hands_view::ghost::{Ghost, GhostPlugin, captured_pose};
+use coulomb_hands_view::ghost::{Ghost, GhostPlugin};
 use coulomb_hands_view::headless_app;
 use coulomb_hands_view::hud::HudLines;
 use coulomb_hands_view::source::{LoadOptions, Source};
@@ -34,11 +34,11 @@ fn a_capture_loads_and_its_ghost_is_between_the_frames_about_the_time() {
     let poses = &capture.poses;
     assert_eq!((poses.len(), playback.tracks.len()), (146, 1));
     assert!(source.duration().is_some_and(|d| (d - 145.0 / 30.0).abs() < 1e-5), "4.83 s");
-    assert_eq!(captured_pose(capture, 0.0), poses[0]);
-    assert_eq!(captured_pose(capture, 60.0), poses[145], "the last pose held");
+    assert_eq!(capture.pose_at(0.0), poses[0]);
+    assert_eq!(capture.pose_at(60.0), poses[145], "the last pose held");
     // A third of the way from frame 36 (1.2 s) to 37, while it rises fast.
     let (a, b) = (poses[36], poses[37]);
-    let (p, q) = captured_pose(capture, (36.0 + 1.0 / 3.0) / 30.0);
+    let (p, q) = capture.pose_at((36.0 + 1.0 / 3.0) / 30.0);
     assert!(b.0.y - a.0.y > 5e-3, "rising: {} to {}", a.0.y, b.0.y);
     assert!((p - a.0.lerp(b.0, 1.0 / 3.0)).length() < 1e-6, "{p} between {} and {}", a.0, b.0);
     let turned = |x: glam::Quat, y: glam::Quat| x.angle_between(y);
