@@ -117,10 +117,17 @@ pub fn is_capture_file(path: &Path) -> bool {
 
 /// Reads a capture file and its mesh (beside it).
 pub fn load(path: &Path) -> Result<Capture, InputError> {
-    let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| fail(&name, None, "file", e))?;
+    load_from(path, &crate::files::FileSystem)
+}
+
+/// [`load`], the capture and its mesh read from `files`, as a recording
+/// and a scene's meshes are.
+pub fn load_from(path: &Path, files: &dyn crate::files::Files) -> Result<Capture, InputError> {
+    let (name, text) = super::read_text(path, files)?;
     let dir = path.parent().unwrap_or(Path::new("."));
-    parse(&name, &text, &|file| TriangleMesh::load(&dir.join(file)).map_err(|e| e.to_string()))
+    let mesh =
+        |file: &str| TriangleMesh::load_from(&dir.join(file), files).map_err(|e| e.to_string());
+    parse(&name, &text, &mesh)
 }
 
 /// Parses a capture's text; `mesh` reads the mesh file it names.
