@@ -58,6 +58,6 @@ pub use pipeline::{
 };
 pub use run::RunError;
 pub use scene::{
-    GammaMode, Material, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, ShapeDesc,
-    StaticDesc,
+    GammaMode, HandSurface, Material, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId,
+    ShapeDesc, StaticDesc,
 };

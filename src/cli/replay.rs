@@ -41,6 +41,12 @@ pub struct ReplayArgs {
     /// materials`).
     #[arg(long, value_delimiter = ',', value_name = "NAME")]
     material: Option<Vec<String>>,
+    /// What of a capture's object the hand touches: "exact", the mesh's own surface where
+    /// the mesh is closed (else its convex parts), or "body", the convex parts the engine
+    /// moves.
+    #[arg(long, value_name = "SURFACE",
+          value_parser = clap::value_parser!(coulomb_hands::HandSurface))]
+    hand_surface: Option<coulomb_hands::HandSurface>,
 }
 
 impl ReplayArgs {
@@ -52,9 +58,9 @@ impl ReplayArgs {
         {
             return self.run_capture();
         }
-        if self.mass.is_some() || self.material.is_some() {
-            return Err("--mass and --material are for a hand–object capture; give the object \
-                        in a recording's replay with --object"
+        if self.mass.is_some() || self.material.is_some() || self.hand_surface.is_some() {
+            return Err("--mass, --material and --hand-surface are for a hand–object capture; \
+                        give the object in a recording's replay with --object"
                 .into());
         }
         let options = ReplayOptions {
@@ -118,7 +124,8 @@ impl ReplayArgs {
         if self.trace.trace.is_some() || self.soak.is_some() || self.session.record.is_some() {
             return Err("a capture replays once, without --trace, --loop or --record".into());
         }
-        let grid = CaptureGrid::new(self.method.method, self.gamma, self.mass, self.material)?;
+        let mut grid = CaptureGrid::new(self.method.method, self.gamma, self.mass, self.material)?;
+        grid.hand_surface = self.hand_surface.unwrap_or(grid.hand_surface);
         let capture = coulomb_hands::input::capture::load(&self.file)?;
         let report = replay_grid(&capture, &grid)?;
         self.output.print(&report, print_capture)?;
@@ -148,6 +155,7 @@ fn print_capture(report: &coulomb_hands::run::capture::CaptureReport) {
             side(c.shape)
         );
     }
+    println!("the hand touches {}", c.touched);
     for r in &report.replays {
         let s = &r.score;
         let yes = |b: bool| if b { "yes" } else { "no" };
@@ -172,7 +180,7 @@ fn print_capture(report: &coulomb_hands::run::capture::CaptureReport) {
             s.set_down.distance_mm,
             s.set_down.height_mm,
             s.set_down.captured_height_mm,
-            yes(s.set_down())
+            yes(s.landed())
         );
         println!("  on target: {}; all values finite: {}", yes(s.on_target()), s.all_finite);
     }

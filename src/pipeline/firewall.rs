@@ -42,6 +42,9 @@ pub(super) fn fixed(desc: &StaticDesc) -> Result<SharedShape, WorldError> {
 /// An object as it enters the world.
 pub(super) struct Admitted {
     pub shape: SharedShape,
+    /// The shape its hand contacts query instead, if not `shape`
+    /// ([`crate::scene::HandSurface::Exact`]).
+    pub hand_shape: Option<SharedShape>,
     /// Its contact stiffness γ (N/m), finite and > 0.
     pub gamma: f32,
     /// Its bounding sphere's diameter (m).
@@ -61,6 +64,7 @@ pub(super) fn object(
     gravity: f32,
 ) -> Result<Admitted, WorldError> {
     let shape = desc.validate()?;
+    let hand_shape = desc.hand_shape()?;
     let bounds = shape.compute_local_bounding_sphere();
     let diameter = 2.0 * bounds.radius();
     let mass_properties = match desc.inertia {
@@ -84,7 +88,7 @@ pub(super) fn object(
         let why = format!("automatic γ is {gamma}: needs gravity, μ_st and size > 0");
         return Err(ObjectError::new(&desc.name, "gamma", why).into());
     }
-    Ok(Admitted { shape, gamma, diameter, mass_properties })
+    Ok(Admitted { shape, hand_shape, gamma, diameter, mass_properties })
 }
 
 /// A hand pose for hand number `hand`.

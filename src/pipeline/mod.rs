@@ -46,7 +46,7 @@ use crate::hand::acting::ActingHand;
 use crate::hand::{HandPose, Side};
 use crate::scene::Material;
 use glam::Vec3;
-use rapier3d::prelude::{ColliderHandle, PhysicsWorld, RigidBodyHandle};
+use rapier3d::prelude::{ColliderHandle, PhysicsWorld, RigidBodyHandle, SharedShape};
 use step::StepScratch;
 
 /// What the world keeps per object besides rapier's body.
@@ -102,6 +102,10 @@ pub struct InteractionWorld {
     pub(in crate::pipeline) physics: PhysicsWorld,
     pub(in crate::pipeline) config: InteractionConfig,
     pub(in crate::pipeline) objects: Vec<ObjectSlot>,
+    /// Per object, the shape its hand contacts query instead of its
+    /// collider's (a mesh's exact triangles), or `None`. Apart from the
+    /// slots so a step's object view may borrow it while the slots change.
+    pub(in crate::pipeline) hand_shapes: Vec<Option<SharedShape>>,
     pub(in crate::pipeline) hands: Vec<HandSlot>,
     /// Sorted by (object, hand, bone): each object's contacts are one run.
     pub(in crate::pipeline) contacts: Vec<Contact>,

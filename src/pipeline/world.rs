@@ -60,6 +60,7 @@ impl InteractionWorld {
             physics,
             config,
             objects: Vec::new(),
+            hand_shapes: Vec::new(),
             hands: Vec::new(),
             contacts: Vec::new(),
             events: Vec::new(),
@@ -153,7 +154,7 @@ impl InteractionWorld {
 
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
-        let firewall::Admitted { shape, gamma, diameter, mass_properties } =
+        let firewall::Admitted { shape, hand_shape, gamma, diameter, mass_properties } =
             firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
         let pose = Pose::from_parts(desc.position, desc.rotation);
         let id = ObjectId(self.objects.len() as u32);
@@ -181,6 +182,7 @@ impl InteractionWorld {
             grab: Default::default(),
             removed: false,
         });
+        self.hand_shapes.push(hand_shape);
         self.record(|| Call::AddObject(desc.clone()));
         Ok(id)
     }

@@ -13,7 +13,7 @@ use super::RunError;
 use super::drive::{Observer, StepView};
 use super::replay::replay;
 use crate::input::capture::Capture;
-use crate::scene::object::{MeshBody, MeshShape, ShapeDesc};
+use crate::scene::object::{HandSurface, MeshBody, MeshShape, ShapeDesc};
 use crate::scene::{GammaMode, Material, ObjectDesc, ObjectId, StaticDesc};
 use crate::{InteractionConfig, InteractionWorld, Method};
 use glam::{Quat, Vec3};
@@ -39,6 +39,10 @@ pub struct CaptureOptions {
     pub mass: f32,
     /// The skin–object material.
     pub material: Material,
+    /// What the hand touches: `Exact`, the mesh's own surface wherever
+    /// the mesh closes a volume (the default), or `Body`, the convex parts
+    /// the engine moves (an ablation).
+    pub hand_surface: HandSurface,
 }
 
 impl Default for CaptureOptions {
@@ -48,6 +52,7 @@ impl Default for CaptureOptions {
             gamma: GammaMode::default(),
             mass: DEFAULT_MASS,
             material: Material::wood(),
+            hand_surface: HandSurface::Exact,
         }
     }
 }
@@ -69,12 +74,15 @@ pub struct CaptureGrid {
     pub masses: Vec<f32>,
     /// Skin–object materials.
     pub materials: Vec<Material>,
+    /// What the hand touches ([`CaptureOptions::hand_surface`]).
+    pub hand_surface: HandSurface,
 }
 
 impl CaptureGrid {
     /// The grid of `masses` (kg; [`DEFAULT_MASS`] when `None`) and the
-    /// materials named (wood when `None`); a mass that is not positive, or
-    /// an unknown material, is an error naming it.
+    /// materials named (wood when `None`), the hand touching the exact
+    /// surface; a mass that is not positive, or an unknown material, is an
+    /// error naming it.
     pub fn new(
         method: Method,
         gamma: GammaMode,
@@ -98,7 +106,7 @@ impl CaptureGrid {
             let reason = "give at least one mass and one material".to_string();
             return Err(RunError::Study { field: "mass", reason });
         }
-        Ok(CaptureGrid { method, gamma, masses, materials })
+        Ok(CaptureGrid { method, gamma, masses, materials, hand_surface: HandSurface::Exact })
     }
 }
 
@@ -130,11 +138,14 @@ pub struct CaptureInfo {
     pub finger_widths_mm: [f32; 5],
     /// How far the palm's skin lies before its knuckles' axes (mm).
     pub palm_depth_mm: f32,
+    /// What of the object the hand touches.
+    pub touched: String,
 }
 
 impl CaptureInfo {
-    /// What `capture` holds.
-    pub fn of(c: &Capture) -> CaptureInfo {
+    /// What `capture` holds, and what of its object a hand asked to touch
+    /// `surface` touches.
+    pub fn of(c: &Capture, surface: HandSurface) -> CaptureInfo {
         CaptureInfo {
             source: c.source_name.clone(),
             frames: c.poses.len(),
@@ -144,6 +155,7 @@ impl CaptureInfo {
             shape: c.hand.shape,
             finger_widths_mm: c.hand.widths.map(|w| w * 1e3),
             palm_depth_mm: c.hand.palm_depth * 1e3,
+            touched: touched(c, surface).1,
         }
     }
 }
@@ -158,11 +170,13 @@ pub fn replay_grid(capture: &Capture, grid: &CaptureGrid) -> Result<CaptureRepor
                 gamma: grid.gamma,
                 mass,
                 material: material.clone(),
+                hand_surface: grid.hand_surface,
             };
             replays.push(replay_capture(capture, &options)?);
         }
     }
-    Ok(CaptureReport { capture: CaptureInfo::of(capture), replays })
+    let capture = CaptureInfo::of(capture, grid.hand_surface);
+    Ok(CaptureReport { capture, replays })
 }
 
 /// One replay of a capture: what it was run with, its score, and every
@@ -222,7 +236,7 @@ impl CaptureScore {
     }
 
     /// It ends within 1 cm of the height the captured object ends at.
-    pub fn set_down(&self) -> bool {
+    pub fn landed(&self) -> bool {
         (self.set_down.height_mm - self.set_down.captured_height_mm).abs() <= 10.0
     }
 
@@ -231,7 +245,7 @@ impl CaptureScore {
     /// 5° and 15°.
     pub fn on_target(&self) -> bool {
         self.lifted()
-            && self.set_down()
+            && self.landed()
             && self.translation_mean_mm <= 10.0
             && self.translation_max_mm <= 30.0
             && self.rotation_mean_deg <= 5.0
@@ -291,8 +305,8 @@ pub fn replay_capture(
     capture: &Capture,
     options: &CaptureOptions,
 ) -> Result<CaptureReplay, RunError> {
-    let playback = capture.playback()?;
     let (mut world, object) = capture_world(capture, options)?;
+    let playback = capture.playback()?;
     let mut frames = Vec::with_capacity(capture.poses.len());
     frames.push(measure(capture, &world, object, 0)?);
     let dt = f64::from(world.config().dt);
@@ -324,15 +338,15 @@ pub fn capture_world(
     options: &CaptureOptions,
 ) -> Result<(InteractionWorld, ObjectId), RunError> {
     let base = InteractionConfig { gamma: options.gamma, ..InteractionConfig::default() };
+    capture.check()?;
     let mut world = InteractionWorld::new(options.method.config(base))?;
     let (position, rotation) = capture.poses[0];
     let table = capture.mesh.vertices.iter().map(|v| (rotation * *v + position).y);
     world.add_static(&StaticDesc::ground(table.fold(f32::INFINITY, f32::min), TABLE_FRICTION))?;
+    let body = MeshBody::ConvexParts { concavity: CONCAVITY };
     let shape = ShapeDesc::Mesh(MeshShape {
-        file: capture.mesh_file.clone(),
-        scale: 1.0,
-        body: MeshBody::ConvexParts { concavity: CONCAVITY },
-        mesh: capture.mesh.clone(),
+        hand_surface: touched(capture, options.hand_surface).0,
+        ..MeshShape::new(&capture.mesh_file, 1.0, body, capture.mesh.clone())
     });
     let desc = ObjectDesc {
         shape,
@@ -342,6 +356,19 @@ pub fn capture_world(
     };
     let object = world.add_object(&desc)?;
     Ok((world, object))
+}
+
+/// What the hand touches of a capture's object, asked for `asked`: its
+/// exact surface, which the real hand touched, when the mesh closes a
+/// volume; else the convex parts the engine moves, and why.
+fn touched(capture: &Capture, asked: HandSurface) -> (HandSurface, String) {
+    match asked {
+        HandSurface::Body => (HandSurface::Body, "the mesh's convex parts, as asked".to_string()),
+        HandSurface::Exact => match capture.mesh.solid() {
+            Ok(_) => (HandSurface::Exact, "the mesh's exact surface".to_string()),
+            Err(e) => (HandSurface::Body, format!("the mesh's convex parts ({e})")),
+        },
+    }
 }
 
 /// Measures the object at every captured frame's time: at the physics step
@@ -397,7 +424,7 @@ fn measure(
 /// A contact as a frame reports it.
 fn contact_of(capture: &Capture, c: &crate::contact::Contact) -> FrameContact {
     let friction = c.force - c.normal * c.force.dot(c.normal);
-    let (point, _) = capture.frame.pose_back(c.point, Quat::IDENTITY);
+    let point = capture.frame.point_back(c.point);
     FrameContact {
         bone: c.bone.to_string(),
         depth_mm: c.depth * 1e3,

@@ -15,7 +15,8 @@
 //! A mesh shape loads a file (OBJ, STL, glTF, GLB) relative to the scene file:
 //! `{"Mesh": {"file": "../assets/meshes/pawn.obj", "scale": 1.0,
 //! "body": {"Voxels": {"size": 0.004}}}}`, with body `{"ConvexParts": {"concavity": 0.01}}`
-//! or, for statics only, `"TriMesh"`.
+//! or, for statics only, `"TriMesh"`; `"hand_surface": "Exact"` has hands touch a closed
+//! mesh's own triangles while the engine moves the body.
 //!
 //! Optional: `"ground": {"height": 0.0, "friction": 0.5}`, `"gravity": [0.0, -9.81, 0.0]`
 //! and `"towers": [{"base": [x, y, z]}]` (54 blocks each, see

@@ -20,7 +20,7 @@ pub mod tower;
 pub use file::{Ground, Scene, SceneError};
 pub use material::Material;
 pub use object::{
-    GammaError, GammaMode, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId, Part, ShapeDesc,
-    StaticDesc,
+    GammaError, GammaMode, HandSurface, MeshBody, MeshShape, ObjectDesc, ObjectError, ObjectId,
+    Part, ShapeDesc, StaticDesc,
 };
 pub use tower::Tower;

@@ -61,6 +61,10 @@ pub struct MeshShape {
     pub scale: f32,
     /// How the mesh becomes a collider.
     pub body: MeshBody,
+    /// What of it the hand touches: the body (the default) or the exact
+    /// triangles.
+    #[serde(default)]
+    pub hand_surface: HandSurface,
     /// The file's triangles, filled in when a scene is loaded (and kept in
     /// session files, so a replay needs no mesh files).
     #[serde(default)]
@@ -93,10 +97,72 @@ pub enum MeshBody {
     TriMesh,
 }
 
+/// What a hand's contacts query on a mesh object. The engine collides a
+/// dynamic object as convex pieces (`body`), but a hand's contacts need
+/// only closest points and ray casts, which parry answers exactly on the
+/// triangles. Pieces overfill a concave mesh: V-HACD's parts of a dish
+/// fill its rim's curl by up to 9 mm, where a fitted finger then presses
+/// deep and pushes. So a replay of a real hand on a real object touches
+/// the real surface.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum HandSurface {
+    /// The body the engine moves, as the thesis's hand touched its
+    /// colliders.
+    #[default]
+    Body,
+    /// The file's own triangles ([`super::mesh::TriangleMesh::solid`]):
+    /// the mesh must be closed and wound outwards. A `TriMesh` body is this
+    /// already.
+    Exact,
+}
+
+impl std::str::FromStr for HandSurface {
+    type Err = String;
+    fn from_str(s: &str) -> Result<HandSurface, String> {
+        match s {
+            "body" | "Body" => Ok(HandSurface::Body),
+            "exact" | "Exact" => Ok(HandSurface::Exact),
+            _ => Err(format!("expected \"body\" or \"exact\", got {s:?}")),
+        }
+    }
+}
+
+impl std::fmt::Display for HandSurface {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            HandSurface::Body => "body",
+            HandSurface::Exact => "exact",
+        })
+    }
+}
+
 /// At most this many boxes make a voxelized mesh.
 pub const MAX_VOXEL_BOXES: usize = 4096;
 
 impl MeshShape {
+    /// A mesh made into `body`, touched as its body is
+    /// ([`HandSurface::Body`]).
+    pub fn new(
+        file: impl Into<String>,
+        scale: f32,
+        body: MeshBody,
+        mesh: super::mesh::TriangleMesh,
+    ) -> Self {
+        MeshShape { file: file.into(), scale, body, hand_surface: HandSurface::Body, mesh }
+    }
+
+    /// The shape a hand's contacts query instead of the body's, if it
+    /// touches the exact triangles of a body made of pieces.
+    fn hand_shape(&self, object: &str, field: &str) -> Result<Option<SharedShape>, ObjectError> {
+        if self.hand_surface == HandSurface::Body || self.body == MeshBody::TriMesh {
+            return Ok(None);
+        }
+        let solid = self.mesh.scaled(self.scale).solid().map_err(|e| {
+            ObjectError::new(object, format!("{field}.Mesh.hand_surface"), format!("Exact: {e}"))
+        })?;
+        Ok(Some(SharedShape::new(solid)))
+    }
+
     fn build(&self, object: &str, field: &str) -> Result<SharedShape, ObjectError> {
         let f = |sub: &str| format!("{field}.Mesh.{sub}");
         positive(object, &f("scale"), self.scale)?;
@@ -379,6 +445,15 @@ impl ShapeDesc {
 }
 
 impl ObjectDesc {
+    /// The shape its hand contacts query, if not its collider's: a mesh's
+    /// exact triangles ([`HandSurface::Exact`]).
+    pub(crate) fn hand_shape(&self) -> Result<Option<SharedShape>, ObjectError> {
+        match &self.shape {
+            ShapeDesc::Mesh(mesh) => mesh.hand_shape(&self.name, "shape"),
+            _ => Ok(None),
+        }
+    }
+
     pub(crate) fn validate(&self) -> Result<SharedShape, ObjectError> {
         let name = self.name.as_str();
         positive(name, "mass", self.mass)?;

@@ -138,4 +138,29 @@ fn replay_of_a_capture_checks_its_options_and_prints_nothing_it_could_not_finish
     names(cli_error(&["replay", good, "--trace", "t.jsonl"]), &["--trace"]);
     let leap = repo("data/leap/pinch.json.lz");
     names(cli_error(&["replay", leap.to_str().unwrap(), "--mass", "0.2"]), &["--mass", "capture"]);
+    let surface = cli_error(&["replay", leap.to_str().unwrap(), "--hand-surface", "body"]);
+    names(surface, &["--hand-surface", "capture"]);
+    let (code, _, stderr) = run(&["replay", good, "--hand-surface", "skin"]);
+    assert_eq!(code, Some(2), "clap's usage error: {stderr}");
+    names(stderr, &["--hand-surface", "expected \"body\" or \"exact\", got \"skin\""]);
+}
+
+#[test]
+fn a_capture_whose_mesh_is_not_closed_is_touched_on_its_parts_and_says_why() {
+    // The cube without its last face has a hole: no inside to tell a
+    // finger from, so the hand touches the convex parts the engine moves.
+    let dir = Scratch::new("capture-open");
+    let open = CUBE.trim_end().rsplit_once('\n').unwrap().0;
+    dir.file("cube.obj", format!("{open}\n"));
+    let file = dir.file("open.json", good().to_string());
+    let (code, stdout, stderr) = run(&["replay", file.to_str().unwrap(), "--json"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let report: Value = serde_json::from_str(&stdout).unwrap();
+    let touched = report["capture"]["touched"].as_str().unwrap();
+    names(touched.to_string(), &["convex parts", "the mesh is not closed: 3 of its edges"]);
+    dir.file("cube.obj", CUBE);
+    let (_, closed, _) = run(&["replay", file.to_str().unwrap(), "--hand-surface", "exact"]);
+    names(closed, &["the hand touches the mesh's exact surface"]);
+    let (_, asked, _) = run(&["replay", file.to_str().unwrap(), "--hand-surface", "body"]);
+    names(asked, &["the hand touches the mesh's convex parts, as asked"]);
 }

@@ -8,8 +8,8 @@ use coulomb_hands::hand::rig::HandRig;
 use coulomb_hands::run::drive::{Driver, PoseFn};
 use coulomb_hands::scene::{Part, mesh::TriangleMesh};
 use coulomb_hands::{
-    GammaMode, HandId, HandPose, InteractionConfig, InteractionWorld, Material, MeshBody,
-    MeshShape, ObjectDesc, ObjectId, ShapeDesc, Side, StaticDesc, WorldError,
+    GammaMode, HandId, HandPose, HandSurface, InteractionConfig, InteractionWorld, Material,
+    MeshBody, MeshShape, ObjectDesc, ObjectId, ShapeDesc, Side, StaticDesc, WorldError,
 };
 use glam::{Quat, Vec3};
 
@@ -242,7 +242,7 @@ pub fn tetrahedron() -> TriangleMesh {
 }
 
 fn mesh(mesh: TriangleMesh, scale: f32, body: MeshBody) -> ShapeDesc {
-    ShapeDesc::Mesh(MeshShape { file: "tet.obj".into(), scale, body, mesh })
+    ShapeDesc::Mesh(MeshShape::new("tet.obj", scale, body, mesh))
 }
 
 #[test]
@@ -293,6 +293,53 @@ fn too_many_voxels_is_an_error_naming_the_count() {
     let slab = cuboid(Vec3::new(0.01, 0.5, 0.5));
     let e = object_error(shape(mesh(slab, 1.0, MeshBody::Voxels { size: 0.005 })));
     names(e, &["object 'crate': shape.Mesh.body.Voxels.size: ", "more than 4096"]);
+}
+
+/// `mesh` made into convex parts and touched on its exact surface.
+fn touched_exactly(mesh: TriangleMesh) -> ShapeDesc {
+    let body = MeshBody::ConvexParts { concavity: 0.01 };
+    ShapeDesc::Mesh(MeshShape {
+        hand_surface: HandSurface::Exact,
+        ..MeshShape::new("box.obj", 1.0, body, mesh)
+    })
+}
+
+#[test]
+fn an_exact_surface_must_close_a_volume_wound_outwards() {
+    // A hand touches the exact triangles by telling inside from outside:
+    // a hole, a flipped triangle or inward winding leaves no inside.
+    let closed = cuboid(Vec3::new(0.04, 0.03, 0.02));
+    let mut world = world();
+    world.add_object(&ObjectDesc { shape: touched_exactly(closed.clone()), ..cube() }).unwrap();
+    let mut holed = closed.clone();
+    holed.triangles.pop();
+    let e = object_error(shape(touched_exactly(holed)));
+    names(
+        e,
+        &["object 'crate': shape.Mesh.hand_surface: Exact: the mesh is not closed: 3 of its edges"],
+    );
+    let mut flipped = closed.clone();
+    flipped.triangles[4].swap(1, 2);
+    let e = object_error(shape(touched_exactly(flipped)));
+    names(e, &["shape.Mesh.hand_surface: Exact: the mesh is not closed: ", "a flipped triangle"]);
+    let mut inward = closed.clone();
+    inward.triangles.iter_mut().for_each(|t| t.swap(1, 2));
+    let e = object_error(shape(touched_exactly(inward)));
+    names(e, &["shape.Mesh.hand_surface: Exact: the mesh's triangles wind inwards", "flip them"]);
+    // An STL's triangles share no vertices; corners at the same place are
+    // one, so it closes.
+    let stl = TriangleMesh {
+        vertices: closed
+            .triangles
+            .iter()
+            .flat_map(|t| t.map(|k| closed.vertices[k as usize]))
+            .collect(),
+        triangles: (0..closed.triangles.len() as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect(),
+    };
+    assert_eq!(stl.open_edges(), 0);
+    world.add_object(&ObjectDesc { shape: touched_exactly(stl), ..cube() }).unwrap();
 }
 
 /// The error of adding a changed table as static scenery.

@@ -17,8 +17,7 @@ fn mesh_object(
     mass: f32,
     position: Vec3,
 ) -> ObjectDesc {
-    let shape =
-        ShapeDesc::Mesh(MeshShape { file: format!("{name} (generated)"), scale: 1.0, body, mesh });
+    let shape = ShapeDesc::Mesh(MeshShape::new(format!("{name} (generated)"), 1.0, body, mesh));
     ObjectDesc { shape, ..ObjectDesc::cuboid(name, Vec3::splat(0.01), mass, position) }
 }
 
@@ -176,12 +175,8 @@ fn static_scenery_may_be_an_exact_triangle_mesh_but_a_dynamic_object_may_not() {
     // between the arms.
     let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
     let mesh = generate::u_bracket(0.1, 0.06, 0.06, 0.01);
-    let shape = ShapeDesc::Mesh(MeshShape {
-        file: "u (generated)".into(),
-        scale: 1.0,
-        body: MeshBody::TriMesh,
-        mesh: mesh.clone(),
-    });
+    let shape =
+        ShapeDesc::Mesh(MeshShape::new("u (generated)", 1.0, MeshBody::TriMesh, mesh.clone()));
     world
         .add_static(&StaticDesc {
             name: "u".into(),

@@ -89,10 +89,14 @@ fn replay<'py>(
 
 /// Replays a hand–object capture over a grid of object masses (kg; a
 /// float or a list) and materials (a name or a list), each `None` for the
-/// library's default: `replay CAPTURE --json`'s data, `{"capture": {...},
+/// library's default, the hand touching `hand_surface` ("exact" or
+/// "body"): `replay CAPTURE --json`'s data, `{"capture": {...},
 /// "replays": [...]}`.
 #[pyfunction]
-#[pyo3(signature = (path, *, method = "coulomb", mass = None, material = None, gamma = None))]
+#[pyo3(signature = (
+    path, *, method = "coulomb", mass = None, material = None, gamma = None,
+    hand_surface = "exact"
+))]
 fn replay_capture<'py>(
     py: Python<'py>,
     path: PathBuf,
@@ -100,7 +104,11 @@ fn replay_capture<'py>(
     mass: Option<&Bound<'_, PyAny>>,
     material: Option<&Bound<'_, PyAny>>,
     gamma: Option<&Bound<'_, PyAny>>,
+    hand_surface: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let hand_surface = hand_surface
+        .parse::<coulomb_hands::HandSurface>()
+        .map_err(|e| ArgumentError::new_err(format!("hand_surface: {e}")))?;
     let masses = mass
         .map(|m| m.extract::<f32>().map(|m| vec![m]).or_else(|_| column(m, "mass", None)))
         .transpose()?;
@@ -108,7 +116,8 @@ fn replay_capture<'py>(
     let gamma = gamma.map_or(Ok(GammaMode::default()), crate::world::gamma)?;
     let method = self::method(method)?;
     let report = py.detach(|| {
-        let grid = CaptureGrid::new(method, gamma, masses, materials)?;
+        let grid =
+            CaptureGrid { hand_surface, ..CaptureGrid::new(method, gamma, masses, materials)? };
         let capture = capture::load(&path)?;
         replay_grid(&capture, &grid)
     });

@@ -244,7 +244,7 @@ impl World {
             .detach(|| TriangleMesh::load(&path))
             .map_err(|e| crate::FileError::new_err(e.to_string()))?;
         let file = path.display().to_string();
-        let shape = ShapeDesc::Mesh(MeshShape { file, scale, body, mesh });
+        let shape = ShapeDesc::Mesh(MeshShape::new(file, scale, body, mesh));
         let at = arrays::vec3(position, "position")?;
         let desc = ObjectDesc {
             shape,

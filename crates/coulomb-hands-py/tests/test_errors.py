@@ -84,6 +84,7 @@ def test_a_capture_replay_names_a_missing_file_a_bad_mass_and_an_unknown_materia
     raises(ch.StudyError, lambda: ch.replay_capture(capture, material="unobtainium"), "unobtainium", "known", "wood", "rubber")
     raises(ch.ShapeError, lambda: ch.replay_capture(capture, mass="heavy"), "mass")
     raises(ch.ArgumentError, lambda: ch.replay_capture(capture, material=["wood", 3]), "material")
+    raises(ch.ArgumentError, lambda: ch.replay_capture(capture, hand_surface="skin"), "hand_surface", "exact", "body", "skin")
 
 
 def test_a_world_goes_on_after_an_error_as_if_it_had_not_been() -> None:

@@ -488,7 +488,7 @@ impl Sim {
     ) -> Result<u32, Error> {
         let mesh = text(TriangleMesh::from_bytes(file, bytes))?;
         let body = MeshBody::Voxels { size: voxel_size };
-        let shape = ShapeDesc::Mesh(MeshShape { file: file.into(), scale, body, mesh });
+        let shape = ShapeDesc::Mesh(MeshShape::new(file, scale, body, mesh));
         let at = arrays::vec3s(position, "position", 1)?[0];
         let rotation = arrays::rotation(rotation)?;
         let desc = ObjectDesc { shape, rotation, ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at) };

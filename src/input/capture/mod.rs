@@ -73,8 +73,12 @@ impl CaptureFrame {
     /// A world pose back into the capture's frame and units: position and
     /// rotation (world-from-object, as the capture's poses are).
     pub fn pose_back(&self, position: Vec3, rotation: Quat) -> (Vec3, Quat) {
-        let back = self.rotation.inverse();
-        (back * position / self.scale, (back * rotation).normalize())
+        (self.point_back(position), (self.rotation.inverse() * rotation).normalize())
+    }
+
+    /// A world point back into the capture's frame and units.
+    pub fn point_back(&self, point: Vec3) -> Vec3 {
+        self.rotation.inverse() * point / self.scale
     }
 }
 
@@ -229,6 +233,29 @@ impl Capture {
     /// The time of frame `i` (s).
     pub fn time(&self, i: usize) -> f64 {
         i as f64 / self.frame_rate_hz
+    }
+
+    /// What a replay needs of a capture built in code rather than read:
+    /// at least one frame, a hand for each of the object's poses, and a
+    /// frame rate that is a number above zero.
+    pub fn check(&self) -> Result<(), InputError> {
+        let name = &self.source_name;
+        if !(self.frame_rate_hz.is_finite() && self.frame_rate_hz > 0.0) {
+            let why = format!("must be above 0, got {}", self.frame_rate_hz);
+            return Err(fail(name, None, "frame_rate_hz", why));
+        }
+        if self.poses.is_empty() {
+            return Err(fail(name, None, "object.poses", "a capture needs at least one frame"));
+        }
+        if self.poses.len() != self.hand.keypoints.len() {
+            let why = format!(
+                "{} poses of the object for {} frames of the hand",
+                self.poses.len(),
+                self.hand.keypoints.len()
+            );
+            return Err(fail(name, None, "object.poses", why));
+        }
+        Ok(())
     }
 
     /// The captured object's pose at time `t` (s) ([`pose_at`]).

@@ -58,7 +58,7 @@ use crate::friction::{ForceCap, FrictionCoefficients};
 use crate::hand::{Bone, HandId};
 use crate::scene::ObjectId;
 use apply::RunForces;
-use rapier3d::prelude::{ColliderSet, RigidBodySet};
+use rapier3d::prelude::{ColliderSet, RigidBodySet, SharedShape};
 use stability::{StabilityScale, nominal_damping};
 
 /// Stages 6 and 7's borrows of the world (their methods are in
@@ -69,6 +69,7 @@ use stability::{StabilityScale, nominal_damping};
 /// contacts.
 struct Stage<'w> {
     colliders: &'w ColliderSet,
+    hand_shapes: &'w [Option<SharedShape>],
     config: &'w InteractionConfig,
     /// The hands, whose poses the contacts' bone motions borrow.
     hands: &'w [HandSlot],
@@ -144,7 +145,15 @@ impl InteractionWorld {
     #[inline(always)]
     fn object_view(&self, index: usize, limit: StabilityScale) -> ObjectView<'_> {
         let physics = &self.physics;
-        view_of(index, &self.objects, &physics.bodies, &physics.colliders, &self.config, limit)
+        view_of(
+            index,
+            &self.objects,
+            &physics.bodies,
+            &physics.colliders,
+            &self.hand_shapes,
+            &self.config,
+            limit,
+        )
     }
 
     /// A bone's shape now and one step ago, if its hand is tracked.
@@ -197,6 +206,7 @@ fn view_of<'c>(
     objects: &[ObjectSlot],
     bodies: &RigidBodySet,
     colliders: &'c ColliderSet,
+    hand_shapes: &'c [Option<SharedShape>],
     config: &InteractionConfig,
     limit: StabilityScale,
 ) -> ObjectView<'c> {
@@ -206,7 +216,7 @@ fn view_of<'c>(
     ObjectView {
         id: ObjectId(index as u32),
         pose: *collider.position(),
-        shape: collider.shape(),
+        shape: hand_shapes.get(index).and_then(|s| s.as_deref()).unwrap_or(collider.shape()),
         linvel: body.linvel(),
         angvel: body.angvel(),
         center_of_mass: body.center_of_mass(),

@@ -15,10 +15,21 @@ impl InteractionWorld {
     pub(super) fn update_contacts(&mut self, step: &mut StepScratch) {
         let mut contacts = std::mem::take(&mut self.contacts);
         let mut found = std::mem::take(&mut step.found);
-        let InteractionWorld { physics, config, objects, hands, events, forced, time, .. } = self;
+        let InteractionWorld {
+            physics,
+            config,
+            objects,
+            hands,
+            events,
+            forced,
+            time,
+            hand_shapes,
+            ..
+        } = self;
         let StepScratch { kept, presses, shares, limits, settings, detector, patch, .. } = step;
         let mut stage = Stage {
             colliders: &physics.colliders,
+            hand_shapes,
             config,
             hands,
             presses,
@@ -83,7 +94,15 @@ impl Stage<'_> {
             Some(view) if view.id == contact.object => view,
             _ => {
                 let (objects, bodies) = (&*self.objects, &*self.bodies);
-                let view = view_of(o, objects, bodies, self.colliders, self.config, self.limits[o]);
+                let view = view_of(
+                    o,
+                    objects,
+                    bodies,
+                    self.colliders,
+                    self.hand_shapes,
+                    self.config,
+                    self.limits[o],
+                );
                 *self.view.insert(view)
             }
         };

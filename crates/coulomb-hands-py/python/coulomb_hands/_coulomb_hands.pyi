@@ -299,12 +299,16 @@ def replay_capture(
     mass: Optional[Union[float, Sequence[float]]] = None,
     material: Optional[Union[str, Sequence[str]]] = None,
     gamma: Optional[Gamma] = None,
+    hand_surface: str = "exact",
 ) -> dict[str, Any]:
     """Replays a hand-object capture (its object at its first captured pose, moved by the
     captured hand through contacts alone) once for every material and mass (kg) given, 0.3
-    kg and wood when None, as `coulomb-hands replay CAPTURE --mass ... --material ... --json`
-    does; returns its JSON's data, {"capture": {...}, "replays": [...]}, materials
-    outermost. A mass that is not positive or an unknown material raises `StudyError`."""
+    kg and wood when None, as `coulomb-hands replay CAPTURE --mass ... --material ...
+    --hand-surface ... --json` does; returns its JSON's data, {"capture": {...}, "replays":
+    [...]}, materials outermost. The hand touches the mesh's own surface where the mesh is
+    closed ("exact"), or the convex parts the engine moves ("body"). A mass that is not
+    positive or an unknown material raises `StudyError`; a surface neither "exact" nor
+    "body" raises `ArgumentError`."""
 
 def run_scenario(name_or_path: str, method: str = "coulomb") -> dict[str, Any]:
     """Runs a shipped scenario by name (e.g. "push") or a scenario file; returns
