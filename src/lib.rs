@@ -53,8 +53,8 @@ pub use hand::{
     Bone, Capsule, Finger, HandId, HandPose, HandSample, Palm, Phalanx, PoseError, Side,
 };
 pub use pipeline::{
-    ConfigError, InteractionConfig, InteractionWorld, Method, ObjectFriction, ObjectState,
-    WorldError,
+    ConfigError, HandWrench, HostBody, InteractionConfig, InteractionWorld, Method, ObjectFriction,
+    ObjectState, WorldError,
 };
 pub use run::RunError;
 pub use scene::{

@@ -95,7 +95,7 @@ impl Session {
 
     /// Number of recorded steps.
     pub fn steps(&self) -> usize {
-        self.calls.iter().filter(|c| matches!(c, Call::Step)).count()
+        self.calls.iter().filter(|c| matches!(c, Call::Step | Call::HostStep)).count()
     }
 
     /// Replays every call into a fresh world; `each` sees the world after
@@ -125,6 +125,13 @@ impl Session {
                 Call::RemoveObject(o) => world.remove_object(ObjectId(*o)).map_err(fail)?,
                 Call::Step => {
                     world.step();
+                    each(&world);
+                }
+                Call::SetHostBody(o, state) => {
+                    world.set_host_body(ObjectId(*o), state).map_err(fail)?
+                }
+                Call::HostStep => {
+                    world.host_step().map_err(fail)?;
                     each(&world);
                 }
             }

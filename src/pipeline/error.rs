@@ -21,4 +21,11 @@ pub enum WorldError {
     /// No object has this id.
     #[error("{0} does not exist")]
     NoSuchObject(ObjectId),
+    /// A grab baseline was asked to step in host mode, where the host's
+    /// bodies cannot be carried from here.
+    #[error(
+        "the {0:?} grab baseline moves objects itself, which a host's bodies cannot be made to \
+         do: host mode takes the friction methods (coulomb, thesis)"
+    )]
+    HostGrab(crate::grab::GrabMethod),
 }

@@ -27,6 +27,7 @@
 pub mod config;
 mod error;
 pub(crate) mod firewall;
+pub mod host;
 pub mod method;
 pub mod record;
 pub mod step;
@@ -37,6 +38,7 @@ pub use config::{
     SPECULATIVE_SPEED,
 };
 pub use error::WorldError;
+pub use host::{HandWrench, HostBody};
 pub use method::Method;
 pub use record::{Call, Recorder};
 pub use world::ObjectState;
@@ -68,6 +70,9 @@ pub(in crate::pipeline) struct ObjectSlot {
     pub reseat: bool,
     /// Whether it is in [`InteractionWorld::forced`].
     pub forced: bool,
+    /// Whether a hand pushed it this step: stage 7 set a force on its
+    /// body and woke it (its contacts may all have hovered).
+    pub pushed: bool,
     /// The substeps `set_substeps` added to its body this step, to be given
     /// back in stage 1.
     pub raised: Option<step::Raised>,

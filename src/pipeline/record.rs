@@ -32,6 +32,10 @@ pub enum Call {
     RemoveObject(u32),
     /// [`crate::InteractionWorld::step_physics`], which ends every step.
     Step,
+    /// [`crate::InteractionWorld::set_host_body`].
+    SetHostBody(u32, super::host::HostBody),
+    /// [`crate::InteractionWorld::host_step`], which ends a host-mode step.
+    HostStep,
 }
 
 /// Sees every call that changes a world, after the world accepted it.

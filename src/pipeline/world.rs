@@ -178,6 +178,7 @@ impl InteractionWorld {
             hand_force: Vec3::ZERO,
             reseat: false,
             forced: false,
+            pushed: false,
             raised: None,
             grab: Default::default(),
             removed: false,
@@ -325,7 +326,7 @@ impl InteractionWorld {
     }
 
     /// The object's slot, unless it was never added or was removed.
-    fn slot(&self, id: ObjectId) -> Result<&ObjectSlot, WorldError> {
+    pub(super) fn slot(&self, id: ObjectId) -> Result<&ObjectSlot, WorldError> {
         let slot = self.objects.get(id.0 as usize).filter(|o| !o.removed);
         slot.ok_or(WorldError::NoSuchObject(id))
     }

@@ -11,7 +11,7 @@
 use super::RunError;
 use crate::hand::{HandId, HandPose, HandSample, Side};
 use crate::input::playback::Playback;
-use crate::pipeline::InteractionWorld;
+use crate::pipeline::{HandWrench, InteractionWorld};
 use std::borrow::BorrowMut;
 use std::sync::{Mutex, PoisonError};
 
@@ -187,6 +187,22 @@ impl<F: FnMut(&StepView) -> Result<(), RunError>> Observer for F {
     }
 }
 
+/// A host engine that integrates a driven world's steps (host mode,
+/// [`crate::pipeline::host`]): it gives each object's state, and takes each
+/// step's hand wrenches to apply and integrate. `Send`, as a driver's hand
+/// sources are.
+pub trait Host: Send {
+    /// Gives the world every object's state as the host has it now
+    /// ([`InteractionWorld::set_host_body`]): before the first step and
+    /// after each step the host integrates, so observers see the objects
+    /// where the host has them.
+    fn give_states(&mut self, world: &mut InteractionWorld) -> Result<(), RunError>;
+
+    /// Applies a step's wrenches (one per object, in id order) and
+    /// integrates the step.
+    fn integrate(&mut self, wrenches: &[HandWrench]) -> Result<(), RunError>;
+}
+
 /// Drives a world: hand sources in, observers out. It borrows the world
 /// (`Driver::new(&mut world)`), or owns it (`Driver::new(world)`) where the
 /// driver must outlive the caller's stack, as in an app's resource.
@@ -201,13 +217,16 @@ pub struct Driver<'s, W: BorrowMut<InteractionWorld>> {
     start: f64,
     /// Steps run so far.
     steps: usize,
+    /// The host that integrates the steps, if not the world's own rapier;
+    /// behind a lock for the sources' reason.
+    host: Option<Mutex<Box<dyn Host + 's>>>,
 }
 
 impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
     /// A driver of `world`, whose clock starts at the world's time.
     pub fn new(world: W) -> Self {
         let start = world.borrow().time();
-        Driver { world, sources: Vec::new(), frames: Vec::new(), start, steps: 0 }
+        Driver { world, sources: Vec::new(), frames: Vec::new(), start, steps: 0, host: None }
     }
 
     /// Adds a hand to the world, posed by `source` from the next step on.
@@ -215,6 +234,15 @@ impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
         let id = self.world.borrow_mut().add_hand(source.side());
         self.push(id, Box::new(source));
         id
+    }
+
+    /// Hands the steps to `host` (host mode) instead of the world's own
+    /// rapier, which then integrates nothing; the host gives its states at
+    /// once.
+    pub fn set_host(&mut self, mut host: Box<dyn Host + 's>) -> Result<(), RunError> {
+        host.give_states(self.world.borrow_mut())?;
+        self.host = Some(Mutex::new(host));
+        Ok(())
     }
 
     /// Poses a hand already in the world by `source`.
@@ -298,7 +326,15 @@ impl<'s, W: BorrowMut<InteractionWorld>> Driver<'s, W> {
         for o in observers.iter_mut() {
             o.after_hand_forces(world)?;
         }
-        world.step_physics();
+        match &mut self.host {
+            Some(host) => {
+                let host = host.get_mut().unwrap_or_else(PoisonError::into_inner);
+                let wrenches = world.host_forces()?;
+                host.integrate(&wrenches)?;
+                host.give_states(world)?;
+            }
+            None => world.step_physics(),
+        }
         let index = self.steps;
         self.steps += 1;
         let view = StepView {

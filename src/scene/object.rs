@@ -345,7 +345,7 @@ impl ObjectError {
     }
 }
 
-fn positive(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
+pub(crate) fn positive(object: &str, field: &str, v: f32) -> Result<(), ObjectError> {
     if v.is_finite() && v > 0.0 {
         Ok(())
     } else {

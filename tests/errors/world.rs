@@ -384,3 +384,45 @@ fn calls_on_missing_hands_and_objects_name_the_id() {
     let e = driver.drive(ghost, PoseFn::new(Side::Right, |_| Some(pose()))).unwrap_err();
     names(e, &["hand 3 does not exist"]);
 }
+
+#[test]
+fn a_hosts_state_is_checked_whole_before_any_of_it_is_written() {
+    use coulomb_hands::{HandWrench, HostBody, Method};
+    let mut world = world();
+    let id = world.add_object(&cube()).unwrap();
+    let body = &world.physics().bodies[world.object_body(id).unwrap()];
+    let good = HostBody::of_rapier(body);
+    let before = world.object_state(id).unwrap();
+    type Break = fn(&mut HostBody);
+    let cases: [(&str, Break); 7] = [
+        ("position: ", |s| s.position.x = f32::NAN),
+        ("linvel: ", |s| s.linvel.y = f32::INFINITY),
+        ("rotation: must be a unit quaternion", |s| {
+            s.rotation = Quat::from_xyzw(0.0, 0.0, 0.0, 2.0)
+        }),
+        ("mass: ", |s| s.mass = -0.2),
+        ("principal_inertia.y: ", |s| s.principal_inertia.y = 0.0),
+        ("center_of_mass: ", |s| s.center_of_mass.z = f32::NAN),
+        ("inertia_rotation: ", |s| s.inertia_rotation = Quat::from_xyzw(0.0, 0.0, 0.0, 0.0)),
+    ];
+    for (field, break_it) in cases {
+        let mut bad = HostBody { position: Vec3::new(0.3, 0.4, 0.5), ..good };
+        break_it(&mut bad);
+        let e = world.set_host_body(id, &bad).unwrap_err();
+        names(e, &["object 'crate': ", field]);
+        assert_eq!(world.object_state(id).unwrap(), before, "{field}: nothing written");
+    }
+    let missing = ObjectId(4);
+    names(world.set_host_body(missing, &good).unwrap_err(), &["object 4 does not exist"]);
+    let wrench =
+        |force| HandWrench { object: id, force, torque: Vec3::ZERO, touched: true, pushed: true };
+    let e = world.integrate_wrenches(&[wrench(Vec3::new(0.0, f32::NAN, 0.0))]).unwrap_err();
+    names(e, &["object 'crate': force: "]);
+    assert_eq!(world.time(), 0.0, "no step was taken");
+    // A grab baseline carries objects itself, which a host's cannot be.
+    let mut grab =
+        InteractionWorld::new(Method::Kinematic.config(InteractionConfig::default())).unwrap();
+    let e = grab.host_step().unwrap_err();
+    names(e, &["Kinematic grab baseline moves objects itself", "coulomb, thesis"]);
+    assert_eq!(grab.time(), 0.0);
+}

@@ -15,6 +15,7 @@ mod flat;
 mod glitch;
 mod grasp;
 mod grip;
+mod host;
 mod lifecycle;
 #[cfg(feature = "live")]
 mod live;

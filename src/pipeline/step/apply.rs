@@ -111,6 +111,7 @@ impl Stage<'_> {
         let Some(run) = self.run.take() else { return };
         let slot = &mut self.objects[run.object.0 as usize];
         slot.hand_force = run.total.into();
+        slot.pushed |= run.pushed;
         if run.pushed {
             let body = &mut self.bodies[slot.body];
             body.reset_forces(false);

@@ -18,7 +18,7 @@ impl InteractionWorld {
     /// The objects pushed last step also get their own substeps back
     /// (`substeps.rs`): `set_substeps` raises them again for those the hands
     /// push this step.
-    pub(super) fn clear_forces(&mut self) {
+    pub(in crate::pipeline) fn clear_forces(&mut self) {
         if std::mem::take(&mut self.external) {
             for slot in self.objects.iter_mut().filter(|o| !o.removed) {
                 if let Some(raised) = slot.raised.take() {
@@ -32,6 +32,7 @@ impl InteractionWorld {
                 }
                 slot.hand_force = Vec3::ZERO;
                 slot.forced = false;
+                slot.pushed = false;
             }
             self.forced.clear();
             return;
@@ -46,6 +47,7 @@ impl InteractionWorld {
             }
             slot.hand_force = Vec3::ZERO;
             slot.forced = false;
+            slot.pushed = false;
         }
     }
 }

@@ -133,6 +133,13 @@ impl InteractionWorld {
         self.physics.step();
         // rapier's broad phase has now seen every object where it was.
         self.unindexed.clear();
+        self.end_step();
+    }
+
+    /// What ends a step whoever integrates it (rapier here, a host in
+    /// [`Self::host_step`]): the clock, and this step's poses become the
+    /// previous ones, for bone velocities.
+    pub(in crate::pipeline) fn end_step(&mut self) {
         self.time += self.config.dt as f64;
         for hand in self.hands.iter_mut() {
             hand.prev = hand.pose.clone();

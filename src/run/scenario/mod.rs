@@ -333,12 +333,34 @@ impl Scenario {
     /// Runs the scenario, showing every step to `observers` too, then
     /// evaluates the checks.
     pub fn run(&self, observers: &mut [&mut dyn Observer]) -> Result<ScenarioReport, RunError> {
+        self.run_in(None, observers)
+    }
+
+    /// [`Self::run`] in host mode: `host` gives the objects' states and
+    /// integrates every step ([`drive::Host`]); its world holds the same
+    /// scene, object for object.
+    pub fn run_hosted(
+        &self,
+        host: Box<dyn drive::Host + '_>,
+        observers: &mut [&mut dyn Observer],
+    ) -> Result<ScenarioReport, RunError> {
+        self.run_in(Some(host), observers)
+    }
+
+    fn run_in(
+        &self,
+        host: Option<Box<dyn drive::Host + '_>>,
+        observers: &mut [&mut dyn Observer],
+    ) -> Result<ScenarioReport, RunError> {
         let mut world = InteractionWorld::new(self.config)?;
         world.add_scene(&self.scene)?;
         let mut history = History::new(&world);
         let mut driver = Driver::new(&mut world);
         for hand in &self.hands {
             driver.add_hand(hand.source());
+        }
+        if let Some(host) = host {
+            driver.set_host(host)?;
         }
         // At least one step, so the checks have a state to measure.
         let steps = ((self.duration / self.config.dt).round() as usize).max(1);

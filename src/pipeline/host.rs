@@ -1,0 +1,241 @@
+//! Host-engine mode: a host engine (Unity's PhysX, Unreal's Chaos, Godot's
+//! Jolt, or rapier run by a program) owns the rigid bodies and integrates
+//! them; the library gives back what the hand does to each.
+//!
+//! Each step the host gives every object's state ([`HostBody`], through
+//! [`InteractionWorld::set_host_body`]) and the hands' poses, then calls
+//! [`InteractionWorld::host_step`]: stages 0 to 7 of the built-in step run
+//! as they always do, and the step's forces come back as one
+//! [`HandWrench`] per object (force and torque about its centre of mass,
+//! for `AddForce`/`AddTorque`), with every contact's own force at its point
+//! in [`InteractionWorld::contacts`] (for `AddForceAtPosition`, or to draw
+//! them). The host applies them and integrates: gravity and object–object
+//! contacts are its own.
+//!
+//! The library keeps of each object what its contacts need: its shape (for
+//! the contact queries) and material, and the state the host last gave,
+//! written into the body it keeps for it, which rapier never steps in this
+//! mode. [`InteractionWorld::step`] is the same stages followed by the
+//! built-in host, rapier: stage 7 writes the wrenches straight into its
+//! bodies, and [`InteractionWorld::step_physics`] integrates them.
+//! [`InteractionWorld::integrate_wrenches`] is that built-in host offered to
+//! another world: a program that steps rapier itself (and the test that
+//! holds the two modes to the same bits) gives it the wrenches.
+
+use super::InteractionWorld;
+use super::error::WorldError;
+use crate::scene::ObjectId;
+use crate::scene::object::{finite_vec, unit_quat};
+use glam::{Quat, Vec3};
+use rapier3d::math::Pose;
+use rapier3d::prelude::{MassProperties, RigidBody};
+
+/// An object's state as the host has it at the start of a step (world
+/// frame, metres, seconds, kilograms).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct HostBody {
+    /// The body's origin (m).
+    pub position: Vec3,
+    /// Its orientation (unit quaternion).
+    pub rotation: Quat,
+    /// The linear velocity of its centre of mass (m/s).
+    pub linvel: Vec3,
+    /// Its angular velocity (rad/s).
+    pub angvel: Vec3,
+    /// Its mass (kg), above 0.
+    pub mass: f32,
+    /// Its centre of mass in its own frame (m).
+    pub center_of_mass: Vec3,
+    /// Its principal moments of inertia (kg·m²), each above 0.
+    pub principal_inertia: Vec3,
+    /// The rotation from the principal axes to the body's frame.
+    pub inertia_rotation: Quat,
+}
+
+/// What the hands did to one object in a step: the sum of their contacts'
+/// forces, as a force through its centre of mass and a torque about it.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HandWrench {
+    /// The object.
+    pub object: ObjectId,
+    /// The force (N).
+    pub force: Vec3,
+    /// The torque about the centre of mass (N·m).
+    pub torque: Vec3,
+    /// Whether a hand touched it this step (some contact, pressing or
+    /// hovering within the offset): the built-in host gives such a body
+    /// more substeps ([`crate::InteractionConfig::engine_substeps`]).
+    pub touched: bool,
+    /// Whether a hand pushed it: a force to apply, and a body to wake (the
+    /// force and torque may sum to zero though it was pushed).
+    pub pushed: bool,
+}
+
+impl HostBody {
+    /// A rapier body's state, as a program that steps rapier itself gives
+    /// it ([`InteractionWorld::set_host_body`]).
+    pub fn of_rapier(body: &RigidBody) -> HostBody {
+        let props = &body.mass_properties().local_mprops;
+        HostBody {
+            position: body.translation(),
+            rotation: *body.rotation(),
+            linvel: body.linvel(),
+            angvel: body.angvel(),
+            mass: props.mass(),
+            center_of_mass: props.local_com,
+            principal_inertia: props.principal_inertia(),
+            inertia_rotation: props.principal_inertia_local_frame,
+        }
+    }
+}
+
+impl InteractionWorld {
+    /// Host mode: object `id` as the host has it now. The state is checked
+    /// (finite, within range, a unit rotation, a positive mass and
+    /// inertia) before anything is written; a rejected state leaves the
+    /// world as it was.
+    pub fn set_host_body(&mut self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
+        let name = self.slot(id)?.name.clone();
+        check(&name, state)?;
+        let slot = &mut self.objects[id.0 as usize];
+        slot.mass = state.mass;
+        let (body, collider) = (slot.body, slot.collider);
+        let physics = &mut self.physics;
+        // Read as `HostBody::of_rapier` reads them, so a state the host did
+        // not change leaves them, to the bit.
+        let kept = HostBody::of_rapier(&physics.bodies[body]);
+        let same = |a: &HostBody| {
+            (a.mass, a.center_of_mass, a.principal_inertia, a.inertia_rotation)
+                == (
+                    state.mass,
+                    state.center_of_mass,
+                    state.principal_inertia,
+                    state.inertia_rotation,
+                )
+        };
+        if !same(&kept) {
+            let props = MassProperties::with_principal_inertia_frame(
+                state.center_of_mass,
+                state.mass,
+                state.principal_inertia,
+                unit(state.inertia_rotation),
+            );
+            physics.colliders[collider].set_mass_properties(props);
+            physics.bodies[body].recompute_mass_properties_from_colliders(&physics.colliders);
+        }
+        let rigid = &mut physics.bodies[body];
+        rigid.set_position(Pose::from_parts(state.position, unit(state.rotation)), false);
+        rigid.set_linvel(state.linvel, false);
+        rigid.set_angvel(state.angvel, false);
+        physics.bodies.propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+        // rapier's broad phase never sees it move in this mode: the contact
+        // search takes its exact box instead (`step/near.rs`).
+        if !self.unindexed.contains(&id.0) {
+            self.unindexed.push(id.0);
+        }
+        self.record(|| super::Call::SetHostBody(id.0, *state));
+        Ok(())
+    }
+
+    /// Host mode: one step without the engine. Stages 0 to 7 run as in
+    /// [`Self::step`], then the step ends as rapier's would (the time, the
+    /// poses of this step become the previous ones) with nothing
+    /// integrated. Returns each object's wrench, in id order (a removed
+    /// object's is left out). The grab baselines move objects themselves,
+    /// which a host's bodies cannot be made to do from here: they are an
+    /// error, before anything runs.
+    pub fn host_step(&mut self) -> Result<Vec<HandWrench>, WorldError> {
+        self.host_mode()?;
+        self.apply_hand_forces();
+        self.host_forces()
+    }
+
+    /// Host mode's second half, after [`Self::apply_hand_forces`], as
+    /// [`Self::step_physics`] is the built-in step's: the wrenches, then the
+    /// step ends with nothing integrated.
+    pub fn host_forces(&mut self) -> Result<Vec<HandWrench>, WorldError> {
+        self.host_mode()?;
+        let wrenches = self.wrenches();
+        self.record(|| super::Call::HostStep);
+        self.end_step();
+        Ok(wrenches)
+    }
+
+    /// Whether this world's method can run in host mode.
+    fn host_mode(&self) -> Result<(), WorldError> {
+        match self.config.grab {
+            Some(grab) => Err(WorldError::HostGrab(grab)),
+            None => Ok(()),
+        }
+    }
+
+    /// The hands' wrench on each object this step, as stage 7 left them on
+    /// the bodies.
+    fn wrenches(&self) -> Vec<HandWrench> {
+        let live = self.objects.iter().enumerate().filter(|(_, o)| !o.removed);
+        live.map(|(i, slot)| {
+            let body = &self.physics.bodies[slot.body];
+            let (force, torque) = if slot.pushed {
+                (body.user_force(), body.user_torque())
+            } else {
+                (Vec3::ZERO, Vec3::ZERO)
+            };
+            let (touched, pushed) = (slot.forced, slot.pushed);
+            HandWrench { object: ObjectId(i as u32), force, torque, touched, pushed }
+        })
+        .collect()
+    }
+
+    /// The built-in host, for a world whose objects a program steps itself
+    /// with rapier: each object's hand wrench (from another world's
+    /// [`Self::host_step`], object for object) set on its body, then
+    /// [`Self::step_physics`], as [`Self::step`] does after stage 7. Its own
+    /// hands take no part.
+    pub fn integrate_wrenches(&mut self, wrenches: &[HandWrench]) -> Result<(), WorldError> {
+        for w in wrenches {
+            let slot = self.slot(w.object)?;
+            crate::scene::object::finite_vec(&slot.name, "force", w.force)?;
+            crate::scene::object::finite_vec(&slot.name, "torque", w.torque)?;
+        }
+        self.clear_forces();
+        // As stage 7 leaves them (`step/apply.rs`).
+        for w in wrenches.iter().filter(|w| w.touched || w.pushed) {
+            let slot = &mut self.objects[w.object.0 as usize];
+            (slot.forced, slot.pushed) = (true, w.pushed);
+            self.forced.push(w.object.0);
+            if w.pushed {
+                let body = &mut self.physics.bodies[slot.body];
+                body.add_force(w.force, false);
+                body.add_torque(w.torque, false);
+                body.wake_up(true);
+            }
+        }
+        self.step_physics();
+        Ok(())
+    }
+}
+
+/// `q` as the host gave it where it is a unit quaternion to f32's
+/// precision, so that its bits are the host's; else normalised.
+fn unit(q: Quat) -> Quat {
+    if (q.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON { q } else { q.normalize() }
+}
+
+/// A host's state of object `name`, before any of it is written.
+fn check(name: &str, s: &HostBody) -> Result<(), WorldError> {
+    for (field, v) in [
+        ("position", s.position),
+        ("linvel", s.linvel),
+        ("angvel", s.angvel),
+        ("center_of_mass", s.center_of_mass),
+    ] {
+        finite_vec(name, field, v)?;
+    }
+    crate::pipeline::firewall::placement(name, s.position, s.rotation)?;
+    unit_quat(name, "inertia_rotation", s.inertia_rotation)?;
+    crate::scene::object::positive(name, "mass", s.mass)?;
+    for (axis, v) in ["x", "y", "z"].iter().zip(s.principal_inertia.to_array()) {
+        crate::scene::object::positive(name, &format!("principal_inertia.{axis}"), v)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,126 @@
+//! Host-engine mode (`pipeline::host`): the demo and every shipped scenario,
+//! their hands' wrenches handed step by step to a second world that stands
+//! for the host engine and steps rapier, follow the built-in world to the
+//! bit. The world in host mode integrates nothing: what it knows of the
+//! objects' motion, the host gives it.
+
+use super::*;
+use coulomb_hands::output::session::Session;
+use coulomb_hands::run::demo::GraspLiftCarry;
+use coulomb_hands::run::drive::Host;
+use coulomb_hands::run::scenario::{Scenario, shipped};
+use coulomb_hands::{
+    HandWrench, HostBody, InteractionConfig, ObjectDesc, ObjectState, RunError, StaticDesc,
+};
+
+/// A host engine: a world of the same scene, no hands, whose rapier steps
+/// with the wrenches it is given.
+struct RapierHost {
+    world: InteractionWorld,
+}
+
+impl Host for RapierHost {
+    fn give_states(&mut self, world: &mut InteractionWorld) -> Result<(), RunError> {
+        for o in 0..self.world.object_count() {
+            let id = ObjectId(o as u32);
+            let body = &self.world.physics().bodies[self.world.object_body(id).unwrap()];
+            world.set_host_body(id, &HostBody::of_rapier(body))?;
+        }
+        Ok(())
+    }
+
+    fn integrate(&mut self, wrenches: &[HandWrench]) -> Result<(), RunError> {
+        Ok(self.world.integrate_wrenches(wrenches)?)
+    }
+}
+
+/// Every object's state after every step.
+#[derive(Default)]
+struct States(Vec<Vec<ObjectState>>);
+
+impl coulomb_hands::run::drive::Observer for States {
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let w = step.world;
+        let all = (0..w.object_count()).map(|o| w.object_state(ObjectId(o as u32)).unwrap());
+        // The hand force total is the world's own record (Eq. 3.10), not
+        // the host's: the motion is what must agree.
+        self.0.push(all.map(|s| ObjectState { hand_force: Vec3::ZERO, ..s }).collect());
+        Ok(())
+    }
+}
+
+/// The first step and object at which two runs' states differ in any bit.
+fn first_difference(built_in: &States, hosted: &States) -> Option<(usize, usize)> {
+    assert_eq!(built_in.0.len(), hosted.0.len(), "the runs have as many steps");
+    let bits = |s: &ObjectState| {
+        let v = [s.position, s.linvel, s.angvel];
+        (v.map(|v| v.to_array().map(f32::to_bits)), s.rotation.to_array().map(f32::to_bits))
+    };
+    built_in.0.iter().zip(&hosted.0).enumerate().find_map(|(step, (a, b))| {
+        let object = a.iter().zip(b).position(|(a, b)| bits(a) != bits(b))?;
+        Some((step, object))
+    })
+}
+
+#[test]
+fn every_scenario_in_host_mode_moves_its_objects_as_the_built_in_world_to_the_bit() {
+    for (name, _) in shipped() {
+        let scenario = Scenario::find(name).unwrap();
+        let mut built_in = States::default();
+        let report = scenario.run(&mut [&mut built_in]).unwrap();
+        let mut host = InteractionWorld::new(scenario.config).unwrap();
+        host.add_scene(&scenario.scene).unwrap();
+        let mut hosted = States::default();
+        let host = Box::new(RapierHost { world: host });
+        let hosted_report = scenario.run_hosted(host, &mut [&mut hosted]).unwrap();
+        assert!(!built_in.0.is_empty());
+        assert_eq!(first_difference(&built_in, &hosted), None, "{name}: (step, object)");
+        assert_eq!(report, hosted_report, "{name}: the same checks and values");
+    }
+}
+
+#[test]
+fn the_demo_in_host_mode_grasps_lifts_and_turns_the_cube_as_the_built_in_world() {
+    let config = InteractionConfig::default();
+    let run = |hosted: bool| {
+        let GraspLiftCarry { mut world, hand, half, cube } = GraspLiftCarry::new(config).unwrap();
+        if hosted {
+            // The same world, recorded from its first call.
+            world = InteractionWorld::new(config).unwrap();
+            Session::start(&mut world);
+            world.add_static(&StaticDesc::ground(-half, 0.5)).unwrap();
+            let desc = ObjectDesc::cuboid("cube", Vec3::splat(2.0 * half), 0.05, Vec3::ZERO);
+            assert_eq!(world.add_object(&desc).unwrap(), cube);
+            assert_eq!(world.add_hand(Side::Right), hand);
+        }
+        let host = GraspLiftCarry::new(config).unwrap().world;
+        let mut states = States::default();
+        let mut driver = Driver::new(&mut world);
+        let pose = move |t: f64| Some(GraspLiftCarry::pose_at(half, t as f32));
+        driver.drive(hand, PoseFn::new(Side::Right, pose)).unwrap();
+        if hosted {
+            driver.set_host(Box::new(RapierHost { world: host })).unwrap();
+        }
+        let steps = (GraspLiftCarry::END / config.dt).round() as usize;
+        driver.run(steps, &mut [&mut states]).unwrap();
+        (states, Session::take(&mut world), world.contacts().to_vec())
+    };
+    let ((built_in, _, _), (hosted, session, contacts)) = (run(false), run(true));
+    // A host-mode session (the host's states, the steps) replays to the
+    // same contacts.
+    let session = session.expect("recorded");
+    assert_eq!(session.steps(), built_in.0.len());
+    let mut last = Vec::new();
+    let replayed = session.replay(|w| last = w.contacts().to_vec()).unwrap();
+    assert!((replayed.time() - f64::from(GraspLiftCarry::END)).abs() < 1e-6);
+    assert!(!last.is_empty(), "the hand still touches the cube at the end");
+    let bits = |cs: &[coulomb_hands::Contact]| -> Vec<_> {
+        cs.iter().map(|c| (c.bone, c.force.to_array().map(f32::to_bits))).collect()
+    };
+    assert_eq!(bits(&last), bits(&contacts), "the replayed session's last contacts");
+    // The cube was lifted and turned, so the runs agree on a motion.
+    let start = built_in.0[0][0].position.y;
+    let rise = built_in.0.iter().map(|s| s[0].position.y - start).fold(0.0, f32::max);
+    assert!(rise > 0.75 * GraspLiftCarry::LIFT_HEIGHT, "the cube rose {rise} m");
+    assert_eq!(first_difference(&built_in, &hosted), None, "(step, object)");
+}
