@@ -3,9 +3,14 @@
 //! bones pressing (default 32); with `awake`, the reference scene with
 //! sleeping off; with `objects:N`, the cluttered scene of N objects (its
 //! warm-up one second, for the clutter to fall asleep). Warmed up, then
-//! `STEPS` full steps (default 2000).
+//! `STEPS` full steps (default 2000). With a third argument `host`, the
+//! steps run in host mode: a second world of the same scene is the host,
+//! giving its states (`set_host_body`) and integrating the wrenches
+//! (`host_step`, `integrate_wrenches`).
 //!
 //! ```sh
+//! valgrind --tool=callgrind --toggle-collect='*set_host_body*' \
+//!     --toggle-collect='*host_step*' target/release/examples/layer_profile 32 2000 host
 //! cargo build --release --example layer_profile
 //! valgrind --tool=callgrind --toggle-collect='*apply_hand_forces*' \
 //!     target/release/examples/layer_profile 32 2000
@@ -36,6 +41,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     } else {
         (sweep_scene(bench_config(), scene.parse::<usize>()? / 2)?.0, WARM_UP)
     };
+    if args.next().as_deref() == Some("host") {
+        let mut host = sweep_scene(bench_config(), scene.parse::<usize>()? / 2)?.0;
+        for _ in 0..warm_up + steps {
+            for o in 0..host.object_count() {
+                let id = coulomb_hands::ObjectId(o as u32);
+                let body = &host.physics().bodies[host.object_body(id).ok_or("no body")?];
+                world.set_host_body(id, &coulomb_hands::HostBody::of_rapier(body))?;
+            }
+            host.integrate_wrenches(&world.host_step()?)?;
+        }
+        println!("{scene} (host mode): {} bones pressing", bones_pressing(&world));
+        return Ok(());
+    }
     for _ in 0..warm_up + steps {
         world.step();
     }

@@ -95,25 +95,22 @@ impl InteractionWorld {
     /// inertia) before anything is written; a rejected state leaves the
     /// world as it was.
     pub fn set_host_body(&mut self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
-        let name = self.slot(id)?.name.clone();
-        check(&name, state)?;
+        let slot = self.slot(id)?;
+        let mass = MassState::of(state);
+        // The mass properties a host gave last are checked already, and set.
+        let new_mass = slot.host_mass != Some(mass);
+        check_motion(&slot.name, state)?;
+        if new_mass {
+            check_mass(&slot.name, state)?;
+        }
         let slot = &mut self.objects[id.0 as usize];
         slot.mass = state.mass;
-        let (body, collider) = (slot.body, slot.collider);
+        slot.host_mass = Some(mass);
+        let (body, collider, slot_diameter) = (slot.body, slot.collider, slot.diameter);
         let physics = &mut self.physics;
-        // Read as `HostBody::of_rapier` reads them, so a state the host did
-        // not change leaves them, to the bit.
-        let kept = HostBody::of_rapier(&physics.bodies[body]);
-        let same = |a: &HostBody| {
-            (a.mass, a.center_of_mass, a.principal_inertia, a.inertia_rotation)
-                == (
-                    state.mass,
-                    state.center_of_mass,
-                    state.principal_inertia,
-                    state.inertia_rotation,
-                )
-        };
-        if !same(&kept) {
+        // Compared as `HostBody::of_rapier` reads them, so mass properties
+        // the host read from rapier and gives back are left to the bit.
+        if new_mass && MassState::of(&HostBody::of_rapier(&physics.bodies[body])) != mass {
             let props = MassProperties::with_principal_inertia_frame(
                 state.center_of_mass,
                 state.mass,
@@ -124,13 +121,31 @@ impl InteractionWorld {
             physics.bodies[body].recompute_mass_properties_from_colliders(&physics.colliders);
         }
         let rigid = &mut physics.bodies[body];
-        rigid.set_position(Pose::from_parts(state.position, unit(state.rotation)), false);
+        let (from, to) =
+            (*rigid.position(), Pose::from_parts(state.position, unit(state.rotation)));
+        // Turned by at most π·|Δq| (rad), either sign of q: no trigonometry.
+        let (a, b) = (from.rotation, to.rotation);
+        let chord = (a - b).length().min((a + b).length());
+        let turned = std::f32::consts::PI * chord;
+        let moved = from.translation.distance(to.translation) + turned * slot_diameter;
+        self.host_moved = self.host_moved.max(moved);
+        rigid.set_position(to, false);
         rigid.set_linvel(state.linvel, false);
         rigid.set_angvel(state.angvel, false);
-        physics.bodies.propagate_modified_body_positions_to_colliders(&mut physics.colliders);
+        // Its collider where rapier's step would put it (rapier's own
+        // propagation visits every body changed since its last step, which
+        // in this mode is every body, every call).
+        let pose = *rigid.position();
+        let c = &mut physics.colliders[collider];
+        let local = c.position_wrt_parent().copied().unwrap_or_default();
+        c.set_position(pose * local);
         // rapier's broad phase never sees it move in this mode: the contact
-        // search takes its exact box instead (`step/near.rs`).
-        if !self.unindexed.contains(&id.0) {
+        // search takes its exact box (`step/near.rs`), and asks afresh the
+        // step it is first hosted.
+        let slot = &mut self.objects[id.0 as usize];
+        if !slot.hosted {
+            slot.hosted = true;
+            self.hosted.push(id.0);
             self.unindexed.push(id.0);
         }
         self.record(|| super::Call::SetHostBody(id.0, *state));
@@ -157,6 +172,10 @@ impl InteractionWorld {
         self.host_mode()?;
         let wrenches = self.wrenches();
         self.record(|| super::Call::HostStep);
+        // The hosted objects' first step is done: from now on their exact
+        // boxes and `host_moved` bound the search.
+        let objects = &self.objects;
+        self.unindexed.retain(|&o| !objects[o as usize].hosted);
         self.end_step();
         Ok(wrenches)
     }
@@ -221,21 +240,37 @@ fn unit(q: Quat) -> Quat {
     if (q.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON { q } else { q.normalize() }
 }
 
-/// A host's state of object `name`, before any of it is written.
-fn check(name: &str, s: &HostBody) -> Result<(), WorldError> {
-    for (field, v) in [
-        ("position", s.position),
-        ("linvel", s.linvel),
-        ("angvel", s.angvel),
-        ("center_of_mass", s.center_of_mass),
-    ] {
-        finite_vec(name, field, v)?;
+/// A host body's mass properties, as given: what tells a change.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct MassState(f32, Vec3, Vec3, Quat);
+
+impl MassState {
+    fn of(s: &HostBody) -> MassState {
+        MassState(s.mass, s.center_of_mass, s.principal_inertia, s.inertia_rotation)
     }
-    crate::pipeline::firewall::placement(name, s.position, s.rotation)?;
+}
+
+/// A host's pose and velocities of object `name`, before any is written.
+fn check_motion(name: &str, s: &HostBody) -> Result<(), WorldError> {
+    for (field, v) in [("linvel", s.linvel), ("angvel", s.angvel)] {
+        if !v.is_finite() {
+            let why = format!("must be finite, got {v:?}");
+            return Err(crate::scene::ObjectError::new(name, field, why).into());
+        }
+    }
+    finite_vec(name, "position", s.position)?;
+    unit_quat(name, "rotation", s.rotation)?;
+    Ok(())
+}
+
+/// A host's mass properties of object `name`, before any is written.
+fn check_mass(name: &str, s: &HostBody) -> Result<(), WorldError> {
+    finite_vec(name, "center_of_mass", s.center_of_mass)?;
     unit_quat(name, "inertia_rotation", s.inertia_rotation)?;
     crate::scene::object::positive(name, "mass", s.mass)?;
-    for (axis, v) in ["x", "y", "z"].iter().zip(s.principal_inertia.to_array()) {
-        crate::scene::object::positive(name, &format!("principal_inertia.{axis}"), v)?;
+    let axes = ["principal_inertia.x", "principal_inertia.y", "principal_inertia.z"];
+    for (field, v) in axes.iter().zip(s.principal_inertia.to_array()) {
+        crate::scene::object::positive(name, field, v)?;
     }
     Ok(())
 }

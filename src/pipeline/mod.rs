@@ -70,6 +70,10 @@ pub(in crate::pipeline) struct ObjectSlot {
     pub reseat: bool,
     /// Whether it is in [`InteractionWorld::forced`].
     pub forced: bool,
+    /// Whether a host sets its state ([`InteractionWorld::hosted`]), and
+    /// the mass properties it gave last.
+    pub hosted: bool,
+    pub host_mass: Option<host::MassState>,
     /// Whether a hand pushed it this step: stage 7 set a force on its
     /// body and woke it (its contacts may all have hovered).
     pub pushed: bool,
@@ -120,6 +124,12 @@ pub struct InteractionWorld {
     /// Objects added or put down since rapier's last step: its broad phase
     /// has not seen them where they are (`step/near.rs`).
     pub(in crate::pipeline) unindexed: Vec<u32>,
+    /// Objects whose state a host sets (`host.rs`), which rapier's broad
+    /// phase never sees move: the contact search takes their exact boxes,
+    /// and `host_moved` (m), the farthest the host moved any of them
+    /// since the last step, bounds how far its answers drift.
+    pub(in crate::pipeline) hosted: Vec<u32>,
+    pub(in crate::pipeline) host_moved: f32,
     /// Objects given hand forces this step, whose forces the next step
     /// clears (`step/clear.rs`), each once ([`ObjectSlot::forced`]).
     pub(in crate::pipeline) forced: Vec<u32>,

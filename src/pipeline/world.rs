@@ -67,6 +67,8 @@ impl InteractionWorld {
             time: 0.0,
             scratch: StepScratch::new(&config),
             unindexed: Vec::new(),
+            hosted: Vec::new(),
+            host_moved: 0.0,
             forced: Vec::new(),
             reseating: Vec::new(),
             grabbed: Vec::new(),
@@ -179,6 +181,8 @@ impl InteractionWorld {
             reseat: false,
             forced: false,
             pushed: false,
+            hosted: false,
+            host_mass: None,
             raised: None,
             grab: Default::default(),
             removed: false,
@@ -200,6 +204,7 @@ impl InteractionWorld {
         self.grabbed.retain(|&g| g != id.0);
         self.forced.retain(|&f| f != id.0);
         self.unindexed.retain(|&u| u != id.0);
+        self.hosted.retain(|&u| u != id.0);
         let slot = &mut self.objects[o];
         (slot.removed, slot.forced, slot.raised) = (true, false, None);
         slot.hand_force = Vec3::ZERO;

@@ -141,6 +141,7 @@ impl InteractionWorld {
     /// previous ones, for bone velocities.
     pub(in crate::pipeline) fn end_step(&mut self) {
         self.time += self.config.dt as f64;
+        self.host_moved = 0.0;
         for hand in self.hands.iter_mut() {
             hand.prev = hand.pose.clone();
             hand.prev_mark = hand.pose_mark;

@@ -130,6 +130,8 @@ impl InteractionWorld {
             Some((body.linvel().length() + body.angvel().length() * slot.diameter) * dt)
         };
         let margin = physics.islands.active_bodies().filter_map(moved).fold(0.0, f32::max);
+        // A host moves its objects itself (`host.rs`).
+        let margin = margin.max(self.host_moved);
         if margin.is_finite() { margin } else { f32::INFINITY }
     }
 
@@ -184,6 +186,8 @@ impl InteractionWorld {
             // rapier's tree keeps a removed collider's leaf until its step.
             ids.extend(tagged.filter(|&o| !self.objects[o].removed));
             ids.extend(self.unindexed.iter().map(|&o| o as usize));
+            // Nor has it seen a host's objects move.
+            ids.extend(self.hosted.iter().map(|&o| o as usize));
             ids.sort_unstable();
             ids.dedup();
             answer.drift = 0.0;
