@@ -48,7 +48,7 @@ fn demo(config: InteractionConfig) -> (f32, Rest, (f64, ObjectState)) {
     };
     let mut driver = Driver::new(&mut world);
     driver.drive(hand, PoseFn::new(Side::Right, script)).expect("the demo's hand");
-    let steps = (GraspLiftCarry::END / config.dt).round() as usize;
+    let steps = GraspLiftCarry::steps(config.dt);
     driver.run(steps, &mut [&mut watch]).expect("the demo runs");
     let rest = match landed {
         Some(x) => (x, true),

@@ -263,7 +263,13 @@ fn module_graph() -> BTreeMap<String, BTreeSet<String>> {
 }
 
 /// Every crate of the workspace, by its sources.
-const CRATES: [&str; 3] = ["src", "crates/coulomb-hands-bevy/src", "crates/coulomb-hands-view/src"];
+const CRATES: [&str; 5] = [
+    "src",
+    "crates/coulomb-hands-bevy/src",
+    "crates/coulomb-hands-view/src",
+    "crates/coulomb-hands-py/src",
+    "crates/coulomb-hands-web/src",
+];
 
 #[test]
 fn modules_name_each_other_by_module_path_not_root_re_exports() {
@@ -299,7 +305,7 @@ fn each_crates_top_level_modules_import_each_other_without_cycles() {
     for src in CRATES {
         // Kahn's algorithm: remove modules that use no remaining module.
         let mut left = module_graph_of(src);
-        assert!(left.len() > 3, "{src}: {} modules found", left.len());
+        assert!(left.len() >= 3, "{src}: {} modules found", left.len());
         while let Some(leaf) = left.iter().find(|(_, u)| u.iter().all(|m| !left.contains_key(m))) {
             let leaf = leaf.0.clone();
             left.remove(&leaf);

@@ -252,7 +252,7 @@ async function worldOfFile(file) {
   if (/\.(obj|stl|gltf|glb)$/i.test(name)) {
     const world = wasm.World.desk();
     try {
-      world.addMesh(name, name, bytes, 1.0, 0.005, 0.1, new Float32Array([0, 0.15, 0.1]),
+      world.addMesh(name, name, bytes, 1.0, undefined, 0.1, new Float32Array([0, 0.15, 0.1]),
         new Float32Array(), 'wood');
     } catch (e) {
       world.free();

@@ -91,7 +91,7 @@ pub struct SessionArgs {
     #[arg(
         long,
         value_name = "SHAPE:SIZE_M:MASS_KG",
-        default_value = "box:0.04:0.05",
+        default_value = coulomb_hands::run::held::GraspObject::DEFAULT,
         requires = "object_at"
     )]
     pub object: GraspObject,

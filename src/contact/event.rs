@@ -14,6 +14,21 @@ pub enum ContactEventKind {
     Ended,
 }
 
+impl ContactEventKind {
+    /// Every kind, in the order of [`Self::code`]; the names bindings give
+    /// them (Python's `EVENT_KINDS`).
+    pub const NAMES: [&'static str; 2] = ["began", "ended"];
+
+    /// The kind as a number, for arrays across a binding: its place in
+    /// [`Self::NAMES`].
+    pub fn code(self) -> u8 {
+        match self {
+            ContactEventKind::Began => 0,
+            ContactEventKind::Ended => 1,
+        }
+    }
+}
+
 /// A contact began or ended during a step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactEvent {

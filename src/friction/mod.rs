@@ -103,6 +103,22 @@ pub enum FrictionState {
     Separated,
 }
 
+impl FrictionState {
+    /// Every state, in the order of [`Self::code`]; the names bindings
+    /// give them (Python's `FRICTION_STATES`).
+    pub const NAMES: [&'static str; 3] = ["static", "dynamic", "separated"];
+
+    /// The state as a number, for arrays across a binding (Python, the web
+    /// page, C): its place in [`Self::NAMES`].
+    pub fn code(self) -> u8 {
+        match self {
+            FrictionState::Static => 0,
+            FrictionState::Dynamic => 1,
+            FrictionState::Separated => 2,
+        }
+    }
+}
+
 /// The result of the contact law for one contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ResolvedForce {

@@ -330,9 +330,7 @@ fn orientations(
         let at = format!("{path}[{j}]");
         let c = place.array(&at, q, 4)?;
         let x = |i: usize| place.number(&format!("{at}[{i}]"), &c[i], 2.0).map(|x| x as f32);
-        let q = glam::Vec4::new(x(0)?, x(1)?, x(2)?, x(3)?);
-        q.try_normalize()
-            .map(Quat::from_vec4)
+        super::layouts::rotation([x(0)?, x(1)?, x(2)?, x(3)?])
             .ok_or_else(|| place.err(at, "zero-length quaternion"))
     };
     a.iter().enumerate().map(quat).collect::<Result<Vec<_>, _>>().map(Some)

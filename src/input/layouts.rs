@@ -331,6 +331,13 @@ fn tracked(
     }
 }
 
+/// A joint's or an object's rotation given as four numbers, x, y, z, w,
+/// made a unit quaternion: how every binding and file reader takes one. A
+/// zero-length or non-finite one is `None`, which the caller names.
+pub fn rotation(xyzw: [f32; 4]) -> Option<Quat> {
+    glam::Vec4::from_array(xyzw).try_normalize().map(Quat::from_vec4)
+}
+
 /// The palm joint's orientation for OpenXR joint positions (all 26, in
 /// `XrHandJointEXT` order) given without orientations: from the wrist and
 /// the knuckles, as for WebXR.

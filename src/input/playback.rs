@@ -82,6 +82,12 @@ pub const DEFAULT_GRACE: f64 = 0.1;
 pub const MAX_DURATION: f64 = 3600.0;
 
 impl Playback {
+    /// The physics steps of `dt` (s) a replay of it runs: its whole
+    /// duration and one step more, so its last frame is reached.
+    pub fn steps(&self, dt: f32) -> usize {
+        (self.duration / f64::from(dt)).floor() as usize + 1
+    }
+
     /// Converts every hand of every frame, leaving out and listing the
     /// glitches of the module doc; any other bad frame is an error naming
     /// the frame. Timestamps must not run past [`MAX_DURATION`] from the

@@ -13,10 +13,10 @@ use super::RunError;
 use super::drive::{Observer, StepView};
 use super::replay::replay;
 use crate::input::capture::Capture;
-use crate::scene::object::{HandSurface, MeshBody, MeshShape, ShapeDesc};
+use crate::scene::object::{HandSurface, MeshBody, MeshShape};
 use crate::scene::{GammaMode, Material, ObjectDesc, ObjectId, StaticDesc};
 use crate::{InteractionConfig, InteractionWorld, Method};
-use glam::{Quat, Vec3};
+use glam::Quat;
 
 /// V-HACD's concavity limit for the object: parts within 1 % of the
 /// mesh's size of it, so a finger in a handle or a rim meets the object's
@@ -344,15 +344,14 @@ pub fn capture_world(
     let table = capture.mesh.vertices.iter().map(|v| (rotation * *v + position).y);
     world.add_static(&StaticDesc::ground(table.fold(f32::INFINITY, f32::min), TABLE_FRICTION))?;
     let body = MeshBody::ConvexParts { concavity: CONCAVITY };
-    let shape = ShapeDesc::Mesh(MeshShape {
+    let shape = MeshShape {
         hand_surface: touched(capture, options.hand_surface).0,
         ..MeshShape::new(&capture.mesh_file, 1.0, body, capture.mesh.clone())
-    });
+    };
     let desc = ObjectDesc {
-        shape,
         rotation,
         material: options.material.clone(),
-        ..ObjectDesc::cuboid("object", Vec3::splat(0.1), options.mass, position)
+        ..ObjectDesc::mesh("object", shape, options.mass, position)
     };
     let object = world.add_object(&desc)?;
     Ok((world, object))

@@ -187,10 +187,15 @@ impl GraspLiftCarry {
         claw_grasp(half, closure, Self::SQUEEZE).transformed(Vec3::ZERO, rot, shift)
     }
 
+    /// The physics steps of `dt` (s) the whole script takes.
+    pub fn steps(dt: f32) -> usize {
+        (Self::END / dt).round() as usize
+    }
+
     /// Runs the whole script; `every` is the timeline's row interval (s).
     pub fn run(mut self, every: f32) -> Result<GraspReport, RunError> {
         let dt = self.world.config().dt;
-        let steps = (Self::END / dt).round() as usize;
+        let steps = Self::steps(dt);
         let row_every = ((every / dt).round() as usize).max(1);
         let open_step = (Self::OPEN.0 / dt).round() as usize;
         let mut watch = Watch::new(self.cube, self.hand, row_every, open_step);

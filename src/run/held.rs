@@ -21,6 +21,11 @@ pub struct GraspObject {
 }
 
 impl GraspObject {
+    /// The object a recording's closings get unless one is asked for: a
+    /// 4 cm, 50 g wooden box, a small thing a hand pinches or grasps. The
+    /// command line, the viewer and the web page take it from here.
+    pub const DEFAULT: &'static str = "box:0.04:0.05";
+
     /// This object named `name`, sitting in the grasp at `site`
     /// ([`GraspSite::rotation`]).
     pub fn at(self, site: &GraspSite, name: &str) -> ObjectDesc {

@@ -333,7 +333,7 @@ fn replay_with(
     observers: &mut [&mut dyn Observer],
 ) -> Result<ReplaySummary, RunError> {
     let mut summary = Summary::new(world)?;
-    let steps = (playback.duration / world.config().dt as f64).floor() as usize + 1;
+    let steps = playback.steps(world.config().dt);
     let mut driver = Driver::new(world);
     for track in 0..playback.tracks.len() {
         driver.add_hand(RecordedHand { playback, track });

@@ -147,7 +147,7 @@ pub fn soak(
         .map(|id| world.object_state(id).map(|s| (id, s.position, s.rotation)))
         .collect::<Result<Placement, _>>()?;
     let hands: Vec<HandId> = playback.tracks.iter().map(|t| world.add_hand(t.side)).collect();
-    let per_loop = (playback.duration / world.config().dt as f64).floor() as usize + 1;
+    let per_loop = playback.steps(world.config().dt);
     let time_start = world.time();
     let mut tally = Tally::new(source, per_loop);
     let start_kib = resident_kib();

@@ -136,6 +136,14 @@ impl std::fmt::Display for HandSurface {
     }
 }
 
+impl MeshBody {
+    /// The body a mesh gets where none is asked for (the Python package's
+    /// `add_mesh`, a mesh dropped on the web page): 5 mm voxels, the
+    /// thesis's way, fine enough for a hand-sized object's hollows (the
+    /// fingers are 12-23 mm thick).
+    pub const DEFAULT: MeshBody = MeshBody::Voxels { size: 0.005 };
+}
+
 /// At most this many boxes make a voxelized mesh.
 pub const MAX_VOXEL_BOXES: usize = 4096;
 
@@ -304,6 +312,15 @@ impl ObjectDesc {
         ObjectDesc {
             shape: ShapeDesc::Sphere { radius },
             ..ObjectDesc::cuboid(name, Vec3::splat(2.0 * radius), mass, position)
+        }
+    }
+
+    /// A wooden object of a mesh's shape (`mesh`, its body and what the
+    /// hand touches) and the given mass (kg), at `position`, unturned.
+    pub fn mesh(name: &str, mesh: MeshShape, mass: f32, position: Vec3) -> ObjectDesc {
+        ObjectDesc {
+            shape: ShapeDesc::Mesh(mesh),
+            ..ObjectDesc::cuboid(name, Vec3::ONE, mass, position)
         }
     }
 

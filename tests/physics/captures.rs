@@ -60,7 +60,7 @@ fn demo_capture(dir: &Path) -> PathBuf {
     let mut driver = Driver::new(&mut demo.world);
     let script = PoseFn::new(Side::Right, move |t| Some(GraspLiftCarry::pose_at(half, t as f32)));
     driver.drive(demo.hand, script).unwrap();
-    let steps = (GraspLiftCarry::END / 1e-3).round() as usize;
+    let steps = GraspLiftCarry::steps(1e-3);
     driver.run(steps, &mut [&mut watch]).unwrap();
     poses.insert(0, first);
     // Up to the hand's opening: after it the demo's cube stays balanced on

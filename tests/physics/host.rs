@@ -101,7 +101,7 @@ fn the_demo_in_host_mode_grasps_lifts_and_turns_the_cube_as_the_built_in_world()
         if hosted {
             driver.set_host(Box::new(RapierHost { world: host })).unwrap();
         }
-        let steps = (GraspLiftCarry::END / config.dt).round() as usize;
+        let steps = GraspLiftCarry::steps(config.dt);
         driver.run(steps, &mut [&mut states]).unwrap();
         (states, Session::take(&mut world), world.contacts().to_vec())
     };

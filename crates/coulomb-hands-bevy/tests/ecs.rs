@@ -48,7 +48,7 @@ fn grasp_lift_without_its_cube() -> (HandPhysics, ObjectDesc, usize) {
     let mut s = Scenario::find("grasp-lift").unwrap();
     let cube = s.scene.objects.remove(0);
     assert!(s.scene.objects.is_empty() && s.scene.towers.is_empty(), "one cube");
-    let steps = (s.duration / s.config.dt).round() as usize;
+    let steps = s.steps();
     (HandPhysics::of_scenario(&s).unwrap(), cube, steps)
 }
 

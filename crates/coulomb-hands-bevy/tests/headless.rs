@@ -73,7 +73,7 @@ fn object_transform(app: &mut App, id: ObjectId) -> Transform {
 #[test]
 fn a_scripted_grasp_lifts_the_object_entity_as_the_headless_driver_does() {
     let s = scenario("grasp-lift");
-    let steps = (s.duration / s.config.dt).round() as usize;
+    let steps = s.steps();
     // The same scenario through the core's driver loop, without Bevy.
     let mut world = InteractionWorld::new(s.config).unwrap();
     world.add_scene(&s.scene).unwrap();

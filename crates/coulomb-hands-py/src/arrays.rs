@@ -12,9 +12,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// `contacts()["state"]`'s codes, by index.
-pub const FRICTION_STATES: [&str; 3] = ["static", "dynamic", "separated"];
+pub const FRICTION_STATES: [&str; 3] = coulomb_hands::FrictionState::NAMES;
 /// `events()["kind"]`'s codes, by index.
-pub const EVENT_KINDS: [&str; 2] = ["began", "ended"];
+pub const EVENT_KINDS: [&str; 2] = coulomb_hands::ContactEventKind::NAMES;
 
 /// The 16 bones' names, by `Bone::index`: `palm`, then `thumb proximal` …
 /// `little distal`.

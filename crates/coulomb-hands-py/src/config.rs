@@ -40,7 +40,7 @@ impl Config {
 /// has them (through JSON, so that 0.001 s reads 0.001, not its f32's
 /// digits), but γ as the package spells it everywhere ([`gamma`]).
 fn as_dict<'py>(py: Python<'py>, config: &InteractionConfig) -> PyResult<Bound<'py, PyDict>> {
-    let dict = crate::runs::to_python(py, config)?.cast_into::<PyDict>()?;
+    let dict = crate::values::to_python(py, config)?.cast_into::<PyDict>()?;
     dict.set_item("gamma", pythonize::pythonize(py, &gamma(config.gamma))?)?;
     Ok(dict)
 }
@@ -85,7 +85,7 @@ impl Config {
     /// A method's config (`coulomb`, `thesis`, `kinematic`, `heuristic`).
     #[staticmethod]
     fn for_method(method: &str) -> PyResult<Self> {
-        let method: Method = crate::runs::method(method)?;
+        let method: Method = crate::values::method(method)?;
         Config::new_checked(method.config(InteractionConfig::default()))
     }
 

@@ -11,11 +11,15 @@
 //! * `runs.rs`: the runs the CLI has (`replay`, `replay_capture`,
 //!   `run_scenario`, `eval_accuracy`, `bench`), each returning its `--json`
 //!   data, and the recordings' loader;
+//! * `values.rs`: a method's name, a γ argument, and results as JSON's
+//!   Python objects, which the others take from it, so no two import each
+//!   other;
 //! * here: the exceptions, one per library error kind, and the module.
 
 mod arrays;
 mod config;
 mod runs;
+mod values;
 mod world;
 
 use coulomb_hands::run::bench::BenchError as LibBenchError;
@@ -120,7 +124,8 @@ pub(crate) fn world_error(e: WorldError) -> PyErr {
     match e {
         WorldError::Pose(_) => PoseError::new_err(message),
         WorldError::Object(_) => ObjectError::new_err(message),
-        WorldError::Config(_) => ConfigError::new_err(message),
+        // A method host mode cannot run is the config's.
+        WorldError::Config(_) | WorldError::HostGrab(_) => ConfigError::new_err(message),
         WorldError::NoSuchHand(_) => NoSuchHandError::new_err(message),
         WorldError::NoSuchObject(_) => NoSuchObjectError::new_err(message),
     }

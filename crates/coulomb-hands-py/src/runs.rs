@@ -4,8 +4,10 @@
 //! among them; and the recordings' loader.
 
 use crate::arrays::{column, points_array, pose_dict};
-use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError, UnknownMethodError};
+use crate::values;
+use crate::{ArgumentError, GraspObjectError, InputError, SkeletonError};
 use crate::{bench_error, run_error};
+use coulomb_hands::GammaMode;
 use coulomb_hands::eval::{AccuracyOptions, Conditions, NoiseUnit, Strategy, accuracy};
 use coulomb_hands::input::mediapipe::{self, Label};
 use coulomb_hands::input::{capture, layouts, recording, skeleton};
@@ -14,29 +16,11 @@ use coulomb_hands::run::capture::{CaptureGrid, replay_grid};
 use coulomb_hands::run::replay::{GraspObject, ReplayOptions, replay_file};
 use coulomb_hands::run::scenario::{Scenario, ScenarioReports};
 use coulomb_hands::scene::Scene;
-use coulomb_hands::{GammaMode, Method};
 use glam::Vec3;
 use numpy::PyArray2;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::path::PathBuf;
-
-/// A method by name.
-pub fn method(name: &str) -> PyResult<Method> {
-    name.parse().map_err(|e: coulomb_hands::pipeline::method::UnknownMethod| {
-        UnknownMethodError::new_err(e.to_string())
-    })
-}
-
-/// `value` as JSON's Python objects.
-pub fn to_python<'py>(
-    py: Python<'py>,
-    value: &impl serde::Serialize,
-) -> PyResult<Bound<'py, PyAny>> {
-    let text = serde_json::to_string(value)
-        .map_err(|e| crate::OutputError::new_err(format!("output: {e}")))?;
-    py.import("json")?.call_method1("loads", (text,))
-}
 
 /// Replays a recording (Leap Motion, or a joint recording) or a recorded
 /// session file, headlessly: `replay FILE --json`'s data.
@@ -67,10 +51,10 @@ fn replay<'py>(
         .map(|o| o.parse::<GraspObject>())
         .transpose()
         .map_err(|e| GraspObjectError::new_err(e.to_string()))?;
-    let gamma = gamma.map_or(Ok(defaults.gamma), crate::world::gamma)?;
+    let gamma = gamma.map_or(Ok(defaults.gamma), values::gamma)?;
     let grace = grace.unwrap_or(defaults.grace);
     let device = device.map(|d| crate::arrays::vec3(d, "device")).transpose()?;
-    let method = self::method(method)?;
+    let method = values::method(method)?;
     let summary = py.detach(|| {
         let scene = scene.as_deref().map(Scene::load).transpose()?;
         let options = ReplayOptions {
@@ -84,7 +68,7 @@ fn replay<'py>(
         };
         replay_file(&path, &options)
     });
-    to_python(py, &summary.map_err(run_error)?)
+    values::to_python(py, &summary.map_err(run_error)?)
 }
 
 /// Replays a hand–object capture over a grid of object masses (kg; a
@@ -113,15 +97,15 @@ fn replay_capture<'py>(
         .map(|m| m.extract::<f32>().map(|m| vec![m]).or_else(|_| column(m, "mass", None)))
         .transpose()?;
     let materials = material.map(|m| names(m, "material")).transpose()?;
-    let gamma = gamma.map_or(Ok(GammaMode::default()), crate::world::gamma)?;
-    let method = self::method(method)?;
+    let gamma = gamma.map_or(Ok(GammaMode::default()), values::gamma)?;
+    let method = values::method(method)?;
     let report = py.detach(|| {
         let grid =
             CaptureGrid { hand_surface, ..CaptureGrid::new(method, gamma, masses, materials)? };
         let capture = capture::load(&path)?;
         replay_grid(&capture, &grid)
     });
-    to_python(py, &report.map_err(run_error)?)
+    values::to_python(py, &report.map_err(run_error)?)
 }
 
 /// A name or a list of names, the argument `what`.
@@ -141,13 +125,13 @@ fn run_scenario<'py>(
     name_or_path: &str,
     method: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let method = self::method(method)?;
+    let method = values::method(method)?;
     let report = py.detach(|| {
         let scenario = Scenario::find(name_or_path)?.with_method(method);
         scenario.run(&mut [])
     });
     let report = report.map_err(run_error)?;
-    to_python(py, &ScenarioReports { scenarios: vec![&report] })
+    values::to_python(py, &ScenarioReports { scenarios: vec![&report] })
 }
 
 /// The positioning-accuracy study (thesis §5.2): `eval accuracy --json`'s
@@ -185,7 +169,7 @@ fn eval_accuracy<'py>(
     let defaults = AccuracyOptions::default();
     let methods = match methods {
         None => defaults.methods,
-        Some(names) => names.iter().map(|m| method(m)).collect::<PyResult<_>>()?,
+        Some(names) => names.iter().map(|m| values::method(m)).collect::<PyResult<_>>()?,
     };
     let strategies = match strategies {
         None => defaults.strategies,
@@ -204,7 +188,7 @@ fn eval_accuracy<'py>(
     };
     let options = AccuracyOptions { users, trials, seed, methods, strategies, noise, conditions };
     let study = py.detach(|| accuracy(&options, &mut |_, _| {}));
-    to_python(py, &study.map_err(run_error)?)
+    values::to_python(py, &study.map_err(run_error)?)
 }
 
 /// The performance analysis of thesis §5.3: `bench --json`'s data. With
@@ -229,7 +213,7 @@ fn run_bench<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let options = BenchOptions { steps, boxes, tower, mujoco, objects };
     let report = py.detach(|| lib_bench::run(&options, &mut |_| {}));
-    to_python(py, &report.map_err(bench_error)?)
+    values::to_python(py, &report.map_err(bench_error)?)
 }
 
 /// A recording's frames as the library loads them: a list of

@@ -2,15 +2,15 @@
 
 use crate::arrays::{self, points_array, quats_array, values_array};
 use crate::config::Config;
+use crate::values;
 use crate::{ArgumentError, LayoutError, SkeletonError, world_error};
 use coulomb_hands::input::layouts::{self, JointsError, Layout};
 use coulomb_hands::run::bench;
 use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape, Scene};
 use coulomb_hands::{
-    ContactEventKind, FrictionState, GammaMode, HandId, InteractionConfig, InteractionWorld,
-    Material, ObjectDesc, ObjectError, ObjectId, ObjectState, ShapeDesc, Side, StaticDesc,
-    WorldError,
+    GammaMode, HandId, InteractionConfig, InteractionWorld, Material, ObjectDesc, ObjectError,
+    ObjectId, ObjectState, ShapeDesc, Side, StaticDesc, WorldError,
 };
 use glam::{Quat, Vec3};
 use pyo3::prelude::*;
@@ -34,20 +34,9 @@ pub fn side(name: &str) -> PyResult<Side> {
 
 /// A material of the library's table by name.
 fn material(object: &str, name: &str) -> PyResult<Material> {
-    Material::named(name).ok_or_else(|| {
-        let known: Vec<&str> = Material::names().collect();
-        let reason = format!("unknown material {name:?} (known: {})", known.join(", "));
+    Material::by_name(name).map_err(|reason| {
         world_error(ObjectError { object: object.into(), field: "material".into(), reason }.into())
     })
-}
-
-/// A γ argument: a number (N/m) or `"auto"`, as the command line's
-/// `--gamma` takes it; a number the world checks where it uses it.
-pub fn gamma(value: &Bound<'_, PyAny>) -> PyResult<GammaMode> {
-    match value.extract::<String>() {
-        Ok(text) => text.parse().map_err(|e| ArgumentError::new_err(format!("gamma: {e}"))),
-        Err(_) => Ok(GammaMode::Fixed(value.extract::<f32>()?)),
-    }
 }
 
 /// A rotation, x, y, z, w, or none (unturned).
@@ -176,7 +165,7 @@ impl World {
             inertia: self::inertia(inertia)?,
             ..ObjectDesc::cuboid(name, size, mass, arrays::vec3(position, "position")?)
         };
-        self.add(desc, material, gamma.map(self::gamma).transpose()?)
+        self.add(desc, material, gamma.map(values::gamma).transpose()?)
     }
 
     /// A sphere of `radius` (m) and `mass` (kg); returns its id.
@@ -199,7 +188,7 @@ impl World {
             inertia: self::inertia(inertia)?,
             ..ObjectDesc::sphere(name, radius, mass, at)
         };
-        self.add(desc, material, gamma.map(self::gamma).transpose()?)
+        self.add(desc, material, gamma.map(values::gamma).transpose()?)
     }
 
     /// A mesh from an OBJ, STL, glTF or GLB file, filled with boxes of side
@@ -235,7 +224,7 @@ impl World {
         let body = match (voxel_size, concavity) {
             (Some(size), None) => MeshBody::Voxels { size },
             (None, Some(concavity)) => MeshBody::ConvexParts { concavity },
-            (None, None) => MeshBody::Voxels { size: 0.005 },
+            (None, None) => MeshBody::DEFAULT,
             (Some(_), Some(_)) => {
                 return Err(ArgumentError::new_err("give voxel_size or concavity, not both"));
             }
@@ -244,14 +233,11 @@ impl World {
             .detach(|| TriangleMesh::load(&path))
             .map_err(|e| crate::FileError::new_err(e.to_string()))?;
         let file = path.display().to_string();
-        let shape = ShapeDesc::Mesh(MeshShape::new(file, scale, body, mesh));
+        let shape = MeshShape::new(file, scale, body, mesh);
         let at = arrays::vec3(position, "position")?;
-        let desc = ObjectDesc {
-            shape,
-            rotation: self::rotation(rotation)?,
-            ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at)
-        };
-        self.add(desc, material, gamma.map(self::gamma).transpose()?)
+        let rotation = self::rotation(rotation)?;
+        let desc = ObjectDesc { rotation, ..ObjectDesc::mesh(name, shape, mass, at) };
+        self.add(desc, material, gamma.map(values::gamma).transpose()?)
     }
 
     /// A scene file's ground, statics, objects and towers; returns the ids
@@ -302,14 +288,12 @@ impl World {
                 qs.into_iter()
                     .enumerate()
                     .map(|(j, q)| {
-                        glam::Vec4::from_array(q).try_normalize().map(Quat::from_vec4).ok_or_else(
-                            || {
-                                LayoutError::new_err(format!(
-                                    "{} joint {j}: zero-length or non-finite orientation",
-                                    layout.name()
-                                ))
-                            },
-                        )
+                        coulomb_hands::input::layouts::rotation(q).ok_or_else(|| {
+                            LayoutError::new_err(format!(
+                                "{} joint {j}: zero-length or non-finite orientation",
+                                layout.name()
+                            ))
+                        })
                     })
                     .collect::<PyResult<Vec<Quat>>>()
             })
@@ -480,12 +464,7 @@ impl World {
             values_array(py, c.iter().map(|c| f64::from(c.normal_force))),
         )?;
         dict.set_item("stiffness", values_array(py, c.iter().map(|c| f64::from(c.stiffness))))?;
-        let state = |s: FrictionState| match s {
-            FrictionState::Static => 0u8,
-            FrictionState::Dynamic => 1,
-            FrictionState::Separated => 2,
-        };
-        dict.set_item("state", values_array(py, c.iter().map(|c| state(c.state))))?;
+        dict.set_item("state", values_array(py, c.iter().map(|c| c.state.code())))?;
         Ok(dict)
     }
 
@@ -495,8 +474,7 @@ impl World {
     fn events<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let e = self.world.events();
         let dict = PyDict::new(py);
-        let kind = |k: ContactEventKind| u8::from(k == ContactEventKind::Ended);
-        dict.set_item("kind", values_array(py, e.iter().map(|e| kind(e.kind))))?;
+        dict.set_item("kind", values_array(py, e.iter().map(|e| e.kind.code())))?;
         dict.set_item("object", values_array(py, e.iter().map(|e| e.object.0)))?;
         dict.set_item("hand", values_array(py, e.iter().map(|e| e.hand.0)))?;
         dict.set_item("bone", values_array(py, e.iter().map(|e| e.bone.index() as u32)))?;

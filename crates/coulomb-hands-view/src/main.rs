@@ -42,7 +42,7 @@ struct Args {
     #[arg(
         long,
         value_name = "SHAPE:SIZE_M:MASS_KG",
-        default_value = "box:0.04:0.05",
+        default_value = coulomb_hands::run::held::GraspObject::DEFAULT,
         requires = "object_at"
     )]
     object: GraspObject,

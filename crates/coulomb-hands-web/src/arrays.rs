@@ -5,7 +5,7 @@
 //! the page shows.
 
 use coulomb_hands::hand::{Capsule, HandPose, Palm};
-use coulomb_hands::{Contact, ContactEvent, ContactEventKind, FrictionState, ObjectState};
+use coulomb_hands::{Contact, ContactEvent, ObjectState};
 use glam::{Quat, Vec3};
 
 /// An argument's error: what is wrong with it.
@@ -49,9 +49,7 @@ pub fn quats(values: &[f32], what: &str, count: usize) -> Result<Vec<Quat>, Erro
         .chunks_exact(4)
         .enumerate()
         .map(|(i, q)| {
-            glam::Vec4::from_slice(q)
-                .try_normalize()
-                .map(Quat::from_vec4)
+            coulomb_hands::input::layouts::rotation([q[0], q[1], q[2], q[3]])
                 .ok_or_else(|| format!("{what}[{i}]: zero-length or non-finite rotation"))
         })
         .collect()
@@ -120,11 +118,7 @@ pub fn states(states: impl Iterator<Item = Option<ObjectState>>) -> Vec<f32> {
 pub fn contacts(contacts: &[Contact]) -> Vec<f32> {
     let mut out = Vec::with_capacity(CONTACT * contacts.len());
     for c in contacts {
-        let state = match c.state {
-            FrictionState::Static => 0.0,
-            FrictionState::Dynamic => 1.0,
-            FrictionState::Separated => 2.0,
-        };
+        let state = f32::from(c.state.code());
         out.extend([c.object.0 as f32, c.hand.0 as f32, c.bone.index() as f32, state]);
         out.extend(c.point.to_array());
         out.extend(c.normal.to_array());
@@ -139,7 +133,7 @@ pub fn contacts(contacts: &[Contact]) -> Vec<f32> {
 pub fn events(events: &[ContactEvent]) -> Vec<f64> {
     let mut out = Vec::with_capacity(EVENT * events.len());
     for e in events {
-        let kind = if e.kind == ContactEventKind::Ended { 1.0 } else { 0.0 };
+        let kind = f64::from(e.kind.code());
         out.extend([kind, f64::from(e.object.0), f64::from(e.hand.0), e.bone.index() as f64]);
         out.extend(e.point.to_array().map(f64::from));
         out.push(e.time);

@@ -307,7 +307,8 @@ impl World {
     }
 
     /// A mesh from an OBJ, STL, glTF or GLB file's bytes (`file` its name),
-    /// scaled, filled with boxes of side `voxelSize` (m); returns its id.
+    /// scaled, filled with boxes of side `voxelSize` (m; undefined, the
+    /// library's default, 5 mm); returns its id.
     #[wasm_bindgen(js_name = addMesh)]
     #[allow(clippy::too_many_arguments)]
     pub fn add_mesh(
@@ -316,7 +317,7 @@ impl World {
         file: &str,
         bytes: &[u8],
         scale: f32,
-        voxel_size: f32,
+        voxel_size: Option<f32>,
         mass: f32,
         position: &[f32],
         rotation: &[f32],

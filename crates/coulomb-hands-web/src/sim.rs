@@ -21,8 +21,8 @@ use coulomb_hands::scene::Scene;
 use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape};
 use coulomb_hands::{
-    HandId, InteractionConfig, InteractionWorld, Material, ObjectDesc, ObjectId, ShapeDesc, Side,
-    StaticDesc, WorldError,
+    HandId, InteractionConfig, InteractionWorld, Material, ObjectDesc, ObjectId, Side, StaticDesc,
+    WorldError,
 };
 use glam::{Quat, Vec3};
 use std::path::Path;
@@ -41,7 +41,7 @@ pub const DESK: &str = include_str!("../../coulomb-hands-view/scenes/desk.json")
 
 /// The object the bundled recording's closings get (the book's replay
 /// example): a 4 cm, 50 g box.
-pub const CLOSING_OBJECT: &str = "box:0.04:0.05";
+pub const CLOSING_OBJECT: &str = coulomb_hands::run::held::GraspObject::DEFAULT;
 
 /// What watches a world's run: nothing, a scenario's checks, or a recording's closings.
 enum Script {
@@ -139,7 +139,7 @@ impl Sim {
     pub fn demo() -> Result<Sim, Error> {
         let demo = text(GraspLiftCarry::new(InteractionConfig::default()))?;
         let GraspLiftCarry { world, hand, half, .. } = demo;
-        let steps = (GraspLiftCarry::END / world.config().dt).round() as usize;
+        let steps = GraspLiftCarry::steps(world.config().dt);
         let mut sim = Sim::new(world, Script::Free, Some(steps), "demo");
         let script =
             PoseFn::new(Side::Right, move |t| Some(GraspLiftCarry::pose_at(half, t as f32)));
@@ -166,9 +166,8 @@ impl Sim {
         let mut world = text(InteractionWorld::new(scenario.config))?;
         text(world.add_scene(&scenario.scene))?;
         let history = Box::new(History::new(&world));
+        let steps = scenario.steps();
         let report = ReportInputs { name: scenario.name.clone(), checks: scenario.checks, history };
-        // At least one step, so the checks have a state to measure.
-        let steps = ((scenario.duration / scenario.config.dt).round() as usize).max(1);
         let mut sim = Sim::new(world, Script::Scenario { report }, Some(steps), &scenario.name);
         for hand in scenario.hands {
             sim.driver.add_hand(hand);
@@ -229,7 +228,7 @@ impl Sim {
     /// `world` driven by every hand of `playback` for its whole duration and
     /// one step more, as the CLI's replay runs.
     fn of_playback(world: InteractionWorld, playback: Playback, script: Script, name: &str) -> Sim {
-        let steps = (playback.duration / f64::from(world.config().dt)).floor() as usize + 1;
+        let steps = playback.steps(world.config().dt);
         let mut sim = Sim::new(world, script, Some(steps), name);
         let playback = Box::new(playback);
         for track in 0..playback.tracks.len() {
@@ -433,10 +432,7 @@ impl Sim {
 
     /// Adds `desc` with a material of the library's table by name.
     fn add(&mut self, desc: ObjectDesc, material: &str) -> Result<u32, Error> {
-        let found = Material::named(material).ok_or_else(|| {
-            let known: Vec<&str> = Material::names().collect();
-            format!("{}: unknown material {material:?} (known: {})", desc.name, known.join(", "))
-        })?;
+        let found = Material::by_name(material).map_err(|why| format!("{}: {why}", desc.name))?;
         Ok(text(self.world_mut().add_object(&desc.with_material(found)))?.0)
     }
 
@@ -472,7 +468,8 @@ impl Sim {
 
     /// A mesh from an OBJ, STL, glTF or GLB file's bytes (`file` is its
     /// name, whose extension says its format), scaled by `scale`, filled
-    /// with boxes of side `voxel_size` (m); returns its id.
+    /// with boxes of side `voxel_size` (m; `None`, the library's
+    /// [`MeshBody::DEFAULT`]); returns its id.
     #[allow(clippy::too_many_arguments)]
     pub fn add_mesh(
         &mut self,
@@ -480,18 +477,18 @@ impl Sim {
         file: &str,
         bytes: &[u8],
         scale: f32,
-        voxel_size: f32,
+        voxel_size: Option<f32>,
         mass: f32,
         position: &[f32],
         rotation: &[f32],
         material: &str,
     ) -> Result<u32, Error> {
         let mesh = text(TriangleMesh::from_bytes(file, bytes))?;
-        let body = MeshBody::Voxels { size: voxel_size };
-        let shape = ShapeDesc::Mesh(MeshShape::new(file, scale, body, mesh));
+        let body = voxel_size.map_or(MeshBody::DEFAULT, |size| MeshBody::Voxels { size });
         let at = arrays::vec3s(position, "position", 1)?[0];
         let rotation = arrays::rotation(rotation)?;
-        let desc = ObjectDesc { shape, rotation, ..ObjectDesc::cuboid(name, Vec3::ZERO, mass, at) };
+        let shape = MeshShape::new(file, scale, body, mesh);
+        let desc = ObjectDesc { rotation, ..ObjectDesc::mesh(name, shape, mass, at) };
         self.add(desc, material)
     }
 

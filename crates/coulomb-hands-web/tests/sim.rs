@@ -143,7 +143,7 @@ fn bad_input_is_the_librarys_message_and_changes_nothing() {
     let nan = [f32::NAN; 75];
     let not_finite = desk.set_hand_webxr(hand, &nan, &[0.01; 25], None).unwrap_err();
     assert!(not_finite.contains("webxr joint 0"), "{not_finite}");
-    let mesh = desk.add_mesh("m", "m.obj", b"v 1 2", 1.0, 0.005, 0.1, &[0.0; 3], &[], "wood");
+    let mesh = desk.add_mesh("m", "m.obj", b"v 1 2", 1.0, None, 0.1, &[0.0; 3], &[], "wood");
     assert!(mesh.unwrap_err().contains("m.obj"));
     let material = desk.add_box("b", &[0.1; 3], 0.1, &[0.0; 3], &[], "cheese").unwrap_err();
     assert!(material.contains("cheese") && material.contains("wood"), "{material}");

@@ -336,6 +336,12 @@ impl Scenario {
         self.run_in(None, observers)
     }
 
+    /// The physics steps a run takes: its duration, and at least one, so
+    /// the checks have a state to measure.
+    pub fn steps(&self) -> usize {
+        ((self.duration / self.config.dt).round() as usize).max(1)
+    }
+
     /// [`Self::run`] in host mode: `host` gives the objects' states and
     /// integrates every step ([`drive::Host`]); its world holds the same
     /// scene, object for object.
@@ -362,9 +368,7 @@ impl Scenario {
         if let Some(host) = host {
             driver.set_host(host)?;
         }
-        // At least one step, so the checks have a state to measure.
-        let steps = ((self.duration / self.config.dt).round() as usize).max(1);
-        driver.run(steps, &mut drive::observers(vec![&mut history], observers))?;
+        driver.run(self.steps(), &mut drive::observers(vec![&mut history], observers))?;
         let checks: Vec<CheckResult> = self.checks.iter().map(|c| c.evaluate(&history)).collect();
         Ok(ScenarioReport {
             name: self.name.clone(),
