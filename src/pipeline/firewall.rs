@@ -49,6 +49,9 @@ pub(super) struct Admitted {
     pub gamma: f32,
     /// Its bounding sphere's diameter (m).
     pub diameter: f32,
+    /// How far any point of it is from its origin, at most (m): what a
+    /// turn about the origin moves it by, per radian.
+    pub reach: f32,
     /// Its own mass properties, where it gives its own inertia
     /// ([`ObjectDesc::inertia`]): its shape's centre of mass, its mass
     /// and those moments. `None`: the shape's own at its mass.
@@ -67,6 +70,7 @@ pub(super) fn object(
     let hand_shape = desc.hand_shape()?;
     let bounds = shape.compute_local_bounding_sphere();
     let diameter = 2.0 * bounds.radius();
+    let reach = bounds.center().length() + bounds.radius();
     let mass_properties = match desc.inertia {
         Some(inertia) => {
             // The farthest any of its mass can be from its centre of mass.
@@ -88,7 +92,7 @@ pub(super) fn object(
         let why = format!("automatic γ is {gamma}: needs gravity, μ_st and size > 0");
         return Err(ObjectError::new(&desc.name, "gamma", why).into());
     }
-    Ok(Admitted { shape, hand_shape, gamma, diameter, mass_properties })
+    Ok(Admitted { shape, hand_shape, gamma, diameter, reach, mass_properties })
 }
 
 /// A hand pose for hand number `hand`.

@@ -106,7 +106,7 @@ impl InteractionWorld {
         let slot = &mut self.objects[id.0 as usize];
         slot.mass = state.mass;
         slot.host_mass = Some(mass);
-        let (body, collider, slot_diameter) = (slot.body, slot.collider, slot.diameter);
+        let (body, collider, reach) = (slot.body, slot.collider, slot.reach);
         let physics = &mut self.physics;
         // Compared as `HostBody::of_rapier` reads them, so mass properties
         // the host read from rapier and gives back are left to the bit.
@@ -123,11 +123,12 @@ impl InteractionWorld {
         let rigid = &mut physics.bodies[body];
         let (from, to) =
             (*rigid.position(), Pose::from_parts(state.position, unit(state.rotation)));
-        // Turned by at most π·|Δq| (rad), either sign of q: no trigonometry.
+        // Turned about its origin by at most π·|Δq| (rad), either sign of
+        // q (no trigonometry), so no point moved farther than this.
         let (a, b) = (from.rotation, to.rotation);
         let chord = (a - b).length().min((a + b).length());
         let turned = std::f32::consts::PI * chord;
-        let moved = from.translation.distance(to.translation) + turned * slot_diameter;
+        let moved = from.translation.distance(to.translation) + turned * reach;
         self.host_moved = self.host_moved.max(moved);
         rigid.set_position(to, false);
         rigid.set_linvel(state.linvel, false);

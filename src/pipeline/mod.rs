@@ -61,6 +61,8 @@ pub(in crate::pipeline) struct ObjectSlot {
     pub gamma: f32,
     /// Bounding-sphere diameter (m).
     pub diameter: f32,
+    /// The farthest any of its points is from its origin (m).
+    pub reach: f32,
     /// Mass (kg).
     pub mass: f32,
     /// Eq. 3.10 of the last step (N).

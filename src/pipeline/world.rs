@@ -156,7 +156,7 @@ impl InteractionWorld {
 
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
-        let firewall::Admitted { shape, hand_shape, gamma, diameter, mass_properties } =
+        let firewall::Admitted { shape, hand_shape, gamma, diameter, reach, mass_properties } =
             firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
         let pose = Pose::from_parts(desc.position, desc.rotation);
         let id = ObjectId(self.objects.len() as u32);
@@ -176,6 +176,7 @@ impl InteractionWorld {
             material: desc.material.clone(),
             gamma,
             diameter,
+            reach,
             mass: desc.mass,
             hand_force: Vec3::ZERO,
             reseat: false,

@@ -124,3 +124,55 @@ fn the_demo_in_host_mode_grasps_lifts_and_turns_the_cube_as_the_built_in_world()
     assert!(rise > 0.75 * GraspLiftCarry::LIFT_HEIGHT, "the cube rose {rise} m");
     assert_eq!(first_difference(&built_in, &hosted), None, "(step, object)");
 }
+
+#[test]
+fn a_host_turning_an_object_about_a_far_origin_brings_it_to_a_finger_that_touches_it() {
+    // A 2 cm block 1 m from its object's origin, which the host turns
+    // about y at 5 rad/s: the block sweeps 5 mm a step along its arc, to a
+    // fingertip held still on the arc 0.333 rad ahead. The contact search
+    // keeps its answers while nothing can have moved 5 mm: the block's
+    // sweep must say so, not the turn times the block's own size (with
+    // that, the block passed through the finger untouched).
+    use coulomb_hands::scene::{Part, ShapeDesc};
+    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    let part = Part {
+        position: Vec3::new(1.0, 0.0, 0.0),
+        rotation: Quat::IDENTITY,
+        shape: ShapeDesc::Box { half_extents: Vec3::splat(0.01) },
+    };
+    let desc = ObjectDesc {
+        shape: ShapeDesc::Compound(vec![part]),
+        ..ObjectDesc::cuboid("arm", Vec3::ONE, 0.1, Vec3::new(0.0, 0.5, 0.0))
+    };
+    let arm = world.add_object(&desc).unwrap();
+    let body = &world.physics().bodies[world.object_body(arm).unwrap()];
+    let rest = HostBody::of_rapier(body);
+    let hand = world.add_hand(Side::Right);
+    let ahead = Quat::from_rotation_y(-0.333) * Vec3::new(1.0, 0.0, 0.0) + rest.position;
+    let mut pose = parked_hand(Side::Right);
+    let tip = Bone::Finger(coulomb_hands::Finger::Index, coulomb_hands::Phalanx::Distal);
+    let capsule = Capsule { a: ahead - Vec3::Y * 0.03, b: ahead - Vec3::Y * 0.012, radius: 0.008 };
+    set_bone(&mut pose, tip, capsule);
+    let dt = world.config().dt;
+    let mut touched_at = None;
+    for step in 0..120 {
+        let angle = 5.0 * step as f32 * dt;
+        let state = HostBody {
+            rotation: Quat::from_rotation_y(-angle),
+            angvel: Vec3::new(0.0, -5.0, 0.0),
+            ..rest
+        };
+        world.set_host_body(arm, &state).unwrap();
+        world.set_hand_pose(hand, &pose).unwrap();
+        world.host_step().unwrap();
+        if touched_at.is_none() && !world.contacts().is_empty() {
+            touched_at = Some(angle);
+        }
+    }
+    // The fingertip's cap reaches 6 mm up into the block's height; the
+    // block's leading face meets it at 0.333 rad less the block's
+    // half-width and the finger's radius over 1 m (0.018 rad), less the
+    // 5 mm contact offset's worth: at about 0.31 rad, to a step (5 mrad).
+    let angle = touched_at.expect("the block reached the finger");
+    assert!((0.3..0.325).contains(&angle), "touched at {angle} rad");
+}
