@@ -136,10 +136,9 @@ impl InteractionWorld {
         // Its collider where rapier's step would put it (rapier's own
         // propagation visits every body changed since its last step, which
         // in this mode is every body, every call).
-        let pose = *rigid.position();
         let c = &mut physics.colliders[collider];
         let local = c.position_wrt_parent().copied().unwrap_or_default();
-        c.set_position(pose * local);
+        c.set_position(to * local);
         // rapier's broad phase never sees it move in this mode: the contact
         // search takes its exact box (`step/near.rs`), and asks afresh the
         // step it is first hosted.
@@ -214,8 +213,8 @@ impl InteractionWorld {
     pub fn integrate_wrenches(&mut self, wrenches: &[HandWrench]) -> Result<(), WorldError> {
         for w in wrenches {
             let slot = self.slot(w.object)?;
-            crate::scene::object::finite_vec(&slot.name, "force", w.force)?;
-            crate::scene::object::finite_vec(&slot.name, "torque", w.torque)?;
+            finite(&slot.name, "force", w.force)?;
+            finite(&slot.name, "torque", w.torque)?;
         }
         self.clear_forces();
         // As stage 7 leaves them (`step/apply.rs`).
@@ -224,10 +223,7 @@ impl InteractionWorld {
             (slot.forced, slot.pushed) = (true, w.pushed);
             self.forced.push(w.object.0);
             if w.pushed {
-                let body = &mut self.physics.bodies[slot.body];
-                body.add_force(w.force, false);
-                body.add_torque(w.torque, false);
-                body.wake_up(true);
+                super::step::apply::push(&mut self.physics.bodies[slot.body], w.force, w.torque);
             }
         }
         self.step_physics();
@@ -253,15 +249,21 @@ impl MassState {
 
 /// A host's pose and velocities of object `name`, before any is written.
 fn check_motion(name: &str, s: &HostBody) -> Result<(), WorldError> {
-    for (field, v) in [("linvel", s.linvel), ("angvel", s.angvel)] {
-        if !v.is_finite() {
-            let why = format!("must be finite, got {v:?}");
-            return Err(crate::scene::ObjectError::new(name, field, why).into());
-        }
-    }
+    finite(name, "linvel", s.linvel)?;
+    finite(name, "angvel", s.angvel)?;
     finite_vec(name, "position", s.position)?;
     unit_quat(name, "rotation", s.rotation)?;
     Ok(())
+}
+
+/// A velocity, force or torque of object `name`: finite, of any size (a
+/// position's bound in metres is no bound on these).
+fn finite(name: &str, field: &str, v: Vec3) -> Result<(), WorldError> {
+    if v.is_finite() {
+        return Ok(());
+    }
+    let why = format!("must be finite, got {v:?}");
+    Err(crate::scene::ObjectError::new(name, field, why).into())
 }
 
 /// A host's mass properties of object `name`, before any is written.

@@ -419,6 +419,9 @@ fn a_hosts_state_is_checked_whole_before_any_of_it_is_written() {
     let e = world.integrate_wrenches(&[wrench(Vec3::new(0.0, f32::NAN, 0.0))]).unwrap_err();
     names(e, &["object 'crate': force: "]);
     assert_eq!(world.time(), 0.0, "no step was taken");
+    // A force has no bound in metres: 25 N is a force like any other.
+    world.integrate_wrenches(&[wrench(Vec3::new(0.0, 25.0, 0.0))]).unwrap();
+    assert!(world.time() > 0.0, "the step was taken");
     // A grab baseline carries objects itself, which a host's cannot be.
     let mut grab =
         InteractionWorld::new(Method::Kinematic.config(InteractionConfig::default())).unwrap();
