@@ -223,7 +223,7 @@ impl InteractionWorld {
             (slot.forced, slot.pushed) = (true, w.pushed);
             self.forced.push(w.object.0);
             if w.pushed {
-                super::step::apply::push(&mut self.physics.bodies[slot.body], w.force, w.torque);
+                push(&mut self.physics.bodies[slot.body], w.force, w.torque);
             }
         }
         self.step_physics();
@@ -276,4 +276,18 @@ fn check_mass(name: &str, s: &HostBody) -> Result<(), WorldError> {
         crate::scene::object::positive(name, field, v)?;
     }
     Ok(())
+}
+
+/// Sets a body's hand force and torque (about its centre of mass) for
+/// rapier's step, and wakes it: what a pushed object gets, in stage 7
+/// (`step/apply.rs`) and from another world's wrenches
+/// (`integrate_wrenches`). It lives here because `record` imports this
+/// module, and the step's modules import `record`.
+#[inline(always)]
+pub(in crate::pipeline) fn push(body: &mut RigidBody, force: Vec3, torque: Vec3) {
+    body.reset_forces(false);
+    body.reset_torques(false);
+    body.add_force(force, false);
+    body.add_torque(torque, false);
+    body.wake_up(true);
 }

@@ -3,10 +3,9 @@
 use super::Stage;
 use crate::contact::lanes;
 use crate::friction::total_force;
-use crate::pipeline::firewall;
+use crate::pipeline::{firewall, host};
 use crate::scene::ObjectId;
 use glam::{Vec3, Vec3A};
-use rapier3d::dynamics::RigidBody;
 
 /// The hand forces of one object's run of contacts, summed as they are
 /// applied and written to rapier once, when the run ends ([`Stage::flush`]).
@@ -114,21 +113,9 @@ impl Stage<'_> {
         slot.hand_force = run.total.into();
         slot.pushed |= run.pushed;
         if run.pushed {
-            push(&mut self.bodies[slot.body], run.force.into(), run.torque.into());
+            host::push(&mut self.bodies[slot.body], run.force.into(), run.torque.into());
         }
     }
-}
-
-/// Sets a body's hand force and torque (about its centre of mass) for
-/// rapier's step, and wakes it: what a pushed object gets, here and from
-/// another world's wrenches (`host.rs`, `integrate_wrenches`).
-#[inline(always)]
-pub(in crate::pipeline) fn push(body: &mut RigidBody, force: Vec3, torque: Vec3) {
-    body.reset_forces(false);
-    body.reset_torques(false);
-    body.add_force(force, false);
-    body.add_torque(torque, false);
-    body.wake_up(true);
 }
 
 /// Whether a run's total (every finite sample) and force (the finite

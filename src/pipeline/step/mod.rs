@@ -27,7 +27,7 @@
 //! gravity, object–object contacts and integration, with as many substeps
 //! as `substeps.rs` chooses for what the hands push and for the rest.
 
-pub(in crate::pipeline) mod apply;
+mod apply;
 #[cfg(target_arch = "x86_64")]
 mod avx2;
 mod clear;
