@@ -30,9 +30,13 @@ fn pages() -> Vec<PathBuf> {
     }
     let root = Path::new(ROOT);
     let mut out = vec![root.join("README.md")];
-    for krate in ["coulomb-hands-bevy", "coulomb-hands-view", "coulomb-hands-web"] {
+    for krate in
+        ["coulomb-hands-bevy", "coulomb-hands-view", "coulomb-hands-web", "coulomb-hands-c"]
+    {
         out.push(root.join("crates").join(krate).join("README.md"));
     }
+    out.push(root.join("bindings/unity/README.md"));
+    out.push(root.join("bindings/unity/Samples~/HandCubeTable/README.md"));
     walk(&root.join(BOOK), &mut out);
     out.sort();
     out

@@ -263,12 +263,13 @@ fn module_graph() -> BTreeMap<String, BTreeSet<String>> {
 }
 
 /// Every crate of the workspace, by its sources.
-const CRATES: [&str; 5] = [
+const CRATES: [&str; 6] = [
     "src",
     "crates/coulomb-hands-bevy/src",
     "crates/coulomb-hands-view/src",
     "crates/coulomb-hands-py/src",
     "crates/coulomb-hands-web/src",
+    "crates/coulomb-hands-c/src",
 ];
 
 #[test]

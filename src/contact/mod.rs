@@ -91,6 +91,10 @@ pub struct Contact {
     /// The skin patch's sample points on the object (world, m).
     pub samples: Vec<Vec3>,
     pub(crate) anchor: Anchor,
+    /// The velocity of p over the last step (m/s), its speed into the
+    /// object limited as the law limits it: where a step-aware spring
+    /// expects the bone to go on (`pipeline/step/implicit.rs`).
+    pub(crate) bone_velocity: Vec3,
 }
 
 /// A bone as seen by one step: its hand's pose now and one step ago (the
@@ -259,6 +263,7 @@ impl Contact {
             state: FrictionState::Separated,
             samples: Vec::new(),
             anchor: Anchor::new(near, bone, motion, object, settings),
+            bone_velocity: Vec3::ZERO,
         }
     }
 
@@ -330,6 +335,7 @@ impl Contact {
         );
         self.stiffness = gamma;
         self.bone_point = at.p;
+        self.bone_velocity = press.object_velocity + Self::relative_velocity(press, settings);
         self.depth = press.depth;
         self.state = law.state;
         self.normal_force = law.normal.length();
@@ -384,12 +390,22 @@ impl Contact {
     fn reaction(press: &Press, object: &ObjectView, settings: &LawSettings) -> Vec3 {
         let at = &press.site;
         let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, press.seen);
+        friction::damped_spring_force(
+            spring,
+            object.damping,
+            Self::relative_velocity(press, settings),
+        )
+    }
+
+    /// The bone's velocity relative to the object at the contact, its speed
+    /// into the object limited as the spring's depth is.
+    #[inline(always)]
+    fn relative_velocity(press: &Press, settings: &LawSettings) -> Vec3 {
         let (bone, object_velocity) = (press.bone_velocity, press.object_velocity);
-        let relative_velocity = match settings.max_penetration_speed {
-            Some(v) => friction::limited_relative_velocity(bone, object_velocity, at.n, v),
+        match settings.max_penetration_speed {
+            Some(v) => friction::limited_relative_velocity(bone, object_velocity, press.site.n, v),
             None => bone - object_velocity,
-        };
-        friction::damped_spring_force(spring, object.damping, relative_velocity)
+        }
     }
 
     /// Spreads this step's force over the skin patch (§3.5.4), at `site`

@@ -21,7 +21,9 @@ pub const DEPARTURES: [Departure; 13] = [
     ("force cap", |c, d| c.force_cap = d.force_cap),
     ("penetration-speed limit", |c, d| c.max_penetration_speed = d.max_penetration_speed),
     ("second, wider release offset", |c, d| c.release_offset = d.release_offset),
-    ("stability limit", |c, d| c.stability_limit = d.stability_limit),
+    ("stability limit, step-aware", |c, d| {
+        (c.stability_limit, c.step_aware) = (d.stability_limit, d.step_aware)
+    }),
     ("virtual fingers", |c, d| c.virtual_fingers = d.virtual_fingers),
     ("patch deviation springs", |c, d| c.deviation_springs = d.deviation_springs),
     ("slip re-centring", |c, d| c.slip_recentre = d.slip_recentre),

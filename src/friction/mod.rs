@@ -14,6 +14,8 @@
 //! * [`stribeck`]: how static friction fades to kinetic as skin slides
 //!   faster (a departure from the thesis's sudden drop);
 //! * [`gamma`]: the contact stiffness γ, Eq. 3.11;
+//! * [`implicit`]: the springs stepped by backward Euler, for steps too
+//!   long for explicit ones (a host engine's 90 Hz);
 //! * [`grip`]: the whole grip: the two sides of one hand's grip press as
 //!   equally stiff virtual fingers, and the pad's damper loses what a
 //!   fingertip does.
@@ -32,6 +34,7 @@
 
 pub mod gamma;
 pub mod grip;
+pub mod implicit;
 pub mod law;
 pub mod safeguards;
 pub mod slip;

@@ -338,6 +338,21 @@ pub fn rotation(xyzw: [f32; 4]) -> Option<Quat> {
     glam::Vec4::from_array(xyzw).try_normalize().map(Quat::from_vec4)
 }
 
+/// Each joint's orientation given as four numbers (x, y, z, w) in
+/// `layout`'s order, made unit quaternions ([`rotation`]); a zero-length or
+/// non-finite one is an error naming its joint. The Python package and the
+/// C ABI take a tracker's orientations through here.
+pub fn orientations(layout: Layout, xyzw: &[[f32; 4]]) -> Result<Vec<Quat>, LayoutError> {
+    let one = |(joint, q): (usize, &[f32; 4])| {
+        rotation(*q).ok_or_else(|| LayoutError {
+            layout: layout.name(),
+            joint,
+            reason: "zero-length or non-finite orientation".into(),
+        })
+    };
+    xyzw.iter().enumerate().map(one).collect()
+}
+
 /// The palm joint's orientation for OpenXR joint positions (all 26, in
 /// `XrHandJointEXT` order) given without orientations: from the wrist and
 /// the knuckles, as for WebXR.

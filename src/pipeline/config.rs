@@ -54,9 +54,9 @@ const MAX_SUBSTEPS: usize = 64;
 #[serde(default, deny_unknown_fields)]
 pub struct InteractionConfig {
     /// Physics time step (s); default 1 ms, the haptic rate. Contact springs
-    /// are explicit forces: a longer step is still stable (the stability
-    /// limit softens γ for objects too light for it) but light objects then
-    /// feel softer.
+    /// are explicit forces; at a longer step (a host engine's 1/90 s), an
+    /// object too light for them steps its springs by backward Euler
+    /// ([`Self::step_aware`]), or is softened without it.
     pub dt: f32,
     /// Gravity (m/s²).
     pub gravity: Vec3,
@@ -153,6 +153,12 @@ pub struct InteractionConfig {
     /// Each object's stability limit on γ and damping (default): see
     /// `pipeline/stability.rs`. Off, as in the thesis.
     pub stability_limit: bool,
+    /// Under the stability limit, an object whose springs an explicit step
+    /// could not keep stable, and any touched object at a step longer than
+    /// [`HAPTIC_STEP`], keeps their full γ and damping, stepped by backward
+    /// Euler (`friction/implicit.rs`, default), rather than softened: a grip
+    /// then holds at a host engine's 90 Hz as at 1 kHz.
+    pub step_aware: bool,
     /// A grab baseline instead of friction hands (`None`, the default):
     /// [`crate::grab`].
     pub grab: Option<GrabMethod>,
@@ -215,6 +221,7 @@ impl Default for InteractionConfig {
             rolling: true,
             stribeck_speed: Some(0.03),
             stability_limit: true,
+            step_aware: true,
             virtual_fingers: true,
             grab: None,
             hand_friction: true,

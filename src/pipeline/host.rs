@@ -95,15 +95,16 @@ impl InteractionWorld {
     /// inertia) before anything is written; a rejected state leaves the
     /// world as it was.
     pub fn set_host_body(&mut self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
-        let slot = self.slot(id)?;
+        self.check_host_body(id, state)?;
+        self.write_host_body(id, state);
+        Ok(())
+    }
+
+    /// Writes a state [`Self::check_host_body`] passed.
+    fn write_host_body(&mut self, id: ObjectId, state: &HostBody) {
         let mass = MassState::of(state);
-        // The mass properties a host gave last are checked already, and set.
-        let new_mass = slot.host_mass != Some(mass);
-        check_motion(&slot.name, state)?;
-        if new_mass {
-            check_mass(&slot.name, state)?;
-        }
         let slot = &mut self.objects[id.0 as usize];
+        let new_mass = slot.host_mass != Some(mass);
         slot.mass = state.mass;
         slot.host_mass = Some(mass);
         let (body, collider, reach) = (slot.body, slot.collider, slot.reach);
@@ -149,6 +150,30 @@ impl InteractionWorld {
             self.unindexed.push(id.0);
         }
         self.record(|| super::Call::SetHostBody(id.0, *state));
+    }
+
+    /// Host mode: many objects' states at once, as [`Self::set_host_body`]
+    /// sets one, all checked before any is written: a rejected state (or
+    /// id) leaves the world as it was. An id given twice takes its last
+    /// state. What a binding's batched call does.
+    pub fn set_host_bodies(&mut self, bodies: &[(ObjectId, HostBody)]) -> Result<(), WorldError> {
+        for (id, state) in bodies {
+            self.check_host_body(*id, state)?;
+        }
+        for (id, state) in bodies {
+            self.write_host_body(*id, state);
+        }
+        Ok(())
+    }
+
+    /// Whether `state` may be set on object `id` (mass properties a host
+    /// gave last are checked already).
+    fn check_host_body(&self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
+        let slot = self.slot(id)?;
+        check_motion(&slot.name, state)?;
+        if slot.host_mass != Some(MassState::of(state)) {
+            check_mass(&slot.name, state)?;
+        }
         Ok(())
     }
 

@@ -66,6 +66,7 @@ impl Method {
                 max_penetration_speed: None,
                 release_offset: base.contact_offset,
                 stability_limit: false,
+                step_aware: false,
                 virtual_fingers: false,
                 deviation_springs: false,
                 slip_recentre: false,

@@ -13,7 +13,9 @@
 //!   contact springs, stage 5, among them);
 //! * `firewall.rs`: the NaN firewall, the one gate of every value that
 //!   enters rapier, and [`InteractionWorld::first_non_finite`];
-//! * [`record`]: the hook that sees every call, for session recording.
+//! * [`record`]: the hook that sees every call, for session recording;
+//! * [`host`]: host-engine mode, where a host's bodies take the hands'
+//!   wrenches, and [`frame`]: a host's frame and units, converted.
 //!
 //! Guarantees:
 //! * Hand bones are not bodies in the physics engine, so there is never an
@@ -27,6 +29,7 @@
 pub mod config;
 mod error;
 pub(crate) mod firewall;
+pub mod frame;
 pub mod host;
 pub mod method;
 pub mod record;
@@ -87,6 +90,10 @@ pub(in crate::pipeline) struct ObjectSlot {
     /// Set by [`InteractionWorld::remove_object`]: its body and collider
     /// are gone from rapier, and its id names nothing.
     pub removed: bool,
+    /// Its motion and hand wrench when its springs last stepped by backward
+    /// Euler (`step/implicit.rs`), from which the next step tells the other
+    /// forces on it.
+    pub implicit: Option<step::ImplicitMemory>,
 }
 
 /// What the world keeps per hand.

@@ -187,6 +187,7 @@ impl InteractionWorld {
             raised: None,
             grab: Default::default(),
             removed: false,
+            implicit: None,
         });
         self.hand_shapes.push(hand_shape);
         self.record(|| Call::AddObject(desc.clone()));

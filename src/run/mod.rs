@@ -15,7 +15,9 @@
 //! * [`report`]: the scenario and replay runs that `coulomb-hands report`
 //!   shows;
 //! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side;
-//! * [`clock`]: the wall clock the timed runs are given.
+//! * [`clock`]: the wall clock the timed runs are given;
+//! * [`euler_host`]: a host engine in a few lines, semi-implicit Euler, for
+//!   host mode's tests and measurements.
 
 pub mod bench;
 pub mod capture;
@@ -23,6 +25,7 @@ pub mod clock;
 pub mod closing;
 pub mod demo;
 pub mod drive;
+pub mod euler_host;
 pub mod grasp;
 pub mod held;
 #[cfg(feature = "live")]

@@ -143,9 +143,14 @@ fn boxes_of_any_height_and_mass_start_sliding_at_the_friction_angle() {
 /// The box's acceleration down a palm held at `tilt_deg` (m/s²): a
 /// least-squares parabola through its slide along the palm, from 20 ms
 /// after release (the contact's spring settles) until it has slid 3 cm.
-fn sliding_acceleration(size: Vec3, mass: f32, mu_st: f32, mu_dyn: f32, tilt_deg: f32) -> f32 {
+fn sliding_acceleration(
+    config: InteractionConfig,
+    size: Vec3,
+    mass: f32,
+    (mu_st, mu_dyn): (f32, f32),
+    tilt_deg: f32,
+) -> f32 {
     let material = Material::custom("sliding", mu_st, mu_dyn, 0.5);
-    let config = InteractionConfig::default();
     let start = PALM_HALF.x - size.x / 2.0;
     let (mut world, id, hand) = box_on_palm(config, size, mass, material, tilt_deg, start);
     let palm = palm_at(tilt_deg);
@@ -164,7 +169,9 @@ fn sliding_acceleration(size: Vec3, mass: f32, mu_st: f32, mu_dyn: f32, tilt_deg
             }
         },
     );
-    assert!(done && track.len() > 50, "the box did not slide 3 cm: {:?}", track.last());
+    // At least 50 ms of sliding to fit.
+    let sliding = track.len() as f32 * config.dt;
+    assert!(done && sliding > 0.05, "the box did not slide 3 cm: {:?}", track.last());
     // Fit down(t) = c0 + c1 t + c2 t² by the normal equations.
     let mut m = [[0.0f64; 4]; 3];
     for &(t, x) in &track {
@@ -198,12 +205,28 @@ fn a_sliding_box_accelerates_as_coulomb_says() {
     ] {
         let (s, c) = tilt.to_radians().sin_cos();
         let expected = 9.81 * (s - mu_dyn * c);
-        let a = sliding_acceleration(size, mass, mu_st, mu_dyn, tilt);
+        let config = InteractionConfig::default();
+        let a = sliding_acceleration(config, size, mass, (mu_st, mu_dyn), tilt);
         assert!(
             (a / expected - 1.0).abs() < 0.05,
             "{mass} kg at {tilt}° (μ_dyn {mu_dyn}): {a:.3} m/s², Coulomb says {expected:.3}"
         );
     }
+}
+
+#[test]
+fn at_a_host_engines_90_hz_a_sliding_box_still_accelerates_as_coulomb_says() {
+    // A light box on a steep palm, light enough that its springs step by
+    // backward Euler at 1/90 s (`friction/implicit.rs`).
+    let config = InteractionConfig { dt: 1.0 / 90.0, ..InteractionConfig::default() };
+    let (size, mass, mu_st, mu_dyn, tilt) = (Vec3::new(0.05, 0.015, 0.03), 0.03, 0.44, 0.33, 31.0);
+    let (s, c) = f32::to_radians(tilt).sin_cos();
+    let expected = 9.81 * (s - mu_dyn * c);
+    let a = sliding_acceleration(config, size, mass, (mu_st, mu_dyn), tilt);
+    assert!(
+        (a / expected - 1.0).abs() < 0.05,
+        "{mass} kg at {tilt}° and 90 Hz: {a:.3} m/s², Coulomb says {expected:.3}"
+    );
 }
 
 #[test]

@@ -10,7 +10,8 @@ use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::run::drive::Host;
 use coulomb_hands::run::scenario::{Scenario, shipped};
 use coulomb_hands::{
-    HandWrench, HostBody, InteractionConfig, ObjectDesc, ObjectState, RunError, StaticDesc,
+    Bone, Capsule, Finger, HandWrench, HostBody, InteractionConfig, ObjectDesc, ObjectState,
+    Phalanx, RunError, StaticDesc,
 };
 
 /// A host engine: a world of the same scene, no hands, whose rapier steps
@@ -175,4 +176,79 @@ fn a_host_turning_an_object_about_a_far_origin_brings_it_to_a_finger_that_touche
     // 5 mm contact offset's worth: at about 0.31 rad, to a step (5 mrad).
     let angle = touched_at.expect("the block reached the finger");
     assert!((0.3..0.325).contains(&angle), "touched at {angle} rad");
+}
+
+/// A 3.5 cm, 35 g box squeezed mid-air between two fingertips pressed in
+/// twice Coulomb's threshold (2 μ_st γ depth = 2 m g), its host a plain
+/// semi-implicit Euler integrator stepping at `dt`, held 1.5 s and then let
+/// go. Returns the largest drop while held (m), whether any hand still
+/// touches it 0.3 s after the fingers opened, and its velocity then (m/s).
+fn pinch_with_an_euler_host(dt: f32) -> (f32, bool, Vec3) {
+    use coulomb_hands::run::euler_host::EulerHost;
+    let (half, mass, radius, mu) = (0.0175f32, 0.035f32, 0.0085f32, 0.45f32);
+    let at = Vec3::new(0.1, 0.8, -0.2);
+    let depth = 2.0 * mass * 9.81 / (2.0 * mu * 400.0);
+    let config = InteractionConfig { dt, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).unwrap();
+    let material = Material::custom("skin", mu, 0.4, 0.5);
+    let desc = ObjectDesc::cuboid("box", Vec3::splat(2.0 * half), mass, at).with_material(material);
+    let id = world.add_object(&desc).unwrap();
+    let hands = [world.add_hand(Side::Left), world.add_hand(Side::Right)];
+    let inertia = mass * (2.0 * half).powi(2) / 6.0;
+    let body = HostBody {
+        position: at,
+        rotation: Quat::IDENTITY,
+        linvel: Vec3::ZERO,
+        angvel: Vec3::ZERO,
+        mass,
+        center_of_mass: Vec3::ZERO,
+        principal_inertia: Vec3::splat(inertia),
+        inertia_rotation: Quat::IDENTITY,
+    };
+    let host = EulerHost { bodies: vec![body], gravity: config.gravity, dt };
+    let (hold, open) = (1.5, 0.3);
+    let fingertip = move |side: Side, t: f64| {
+        let s = if side == Side::Left { -1.0 } else { 1.0 };
+        let pressed = if t < hold { depth } else { -0.03 };
+        let x = at.x + s * (half + radius - pressed);
+        let (a, b) = (Vec3::new(x, at.y, at.z - 0.01), Vec3::new(x, at.y, at.z + 0.01));
+        let mut pose = parked_hand(side);
+        set_bone(&mut pose, Bone::Finger(Finger::Index, Phalanx::Distal), Capsule { a, b, radius });
+        Some(pose)
+    };
+    let mut sag = 0.0f32;
+    let mut watch = |step: &StepView| {
+        if step.t <= hold {
+            sag = sag.max(at.y - position(step.world, id).y);
+        }
+        Ok(())
+    };
+    let mut driver = Driver::new(&mut world);
+    driver.set_host(Box::new(host)).unwrap();
+    for (hand, side) in hands.into_iter().zip([Side::Left, Side::Right]) {
+        driver.drive(hand, PoseFn::new(side, move |t| fingertip(side, t))).unwrap();
+    }
+    driver.run(((hold + open) / f64::from(dt)).round() as usize, &mut [&mut watch]).unwrap();
+    let touched = !world.contacts_on(id).is_empty();
+    (sag, touched, world.object_state(id).unwrap().linvel)
+}
+
+#[test]
+fn a_host_stepping_at_1_ms_to_a_60th_of_a_second_holds_a_pinch_and_lets_it_go() {
+    for dt in [1e-3, 1.0 / 240.0, 1.0 / 120.0, 1.0 / 90.0, 1.0 / 72.0, 1.0 / 60.0] {
+        let (sag, touched, velocity) = pinch_with_an_euler_host(dt);
+        let hz = 1.0 / dt;
+        // Held: only the springs' elastic sag, m g / 2γ = 0.4 mm, and a
+        // little; let go: untouched, falling freely since the fingers
+        // opened (the last step's fall may be the step's own), not flung.
+        assert!(sag < 0.0015, "{hz:.0} Hz: sagged {:.2} mm while held", sag * 1e3);
+        assert!(!touched, "{hz:.0} Hz: still touched after the fingers opened");
+        let sideways = Vec3::new(velocity.x, 0.0, velocity.z).length();
+        assert!(sideways < 0.005, "{hz:.0} Hz: flung sideways at {sideways:.3} m/s");
+        assert!(
+            (velocity.y + 9.81 * 0.3).abs() < 9.81 * dt * 2.0 + 0.05,
+            "{hz:.0} Hz: falling at {:.2} m/s, not freely",
+            velocity.y
+        );
+    }
 }

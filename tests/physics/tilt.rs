@@ -10,7 +10,13 @@ const DEG_PER_S: f32 = 3.0;
 /// beyond where it rested, and the tilt at which its contact first went
 /// dynamic.
 fn slide_angle(material: Material) -> (f32, f32) {
-    let mut world = InteractionWorld::new(InteractionConfig::default()).unwrap();
+    slide_angle_at(material, InteractionConfig::default().dt)
+}
+
+/// [`slide_angle`] with the world stepping at `dt` (s).
+fn slide_angle_at(material: Material, dt: f32) -> (f32, f32) {
+    let config = InteractionConfig { dt, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).unwrap();
     let palm_half = Vec3::new(0.045, 0.01, 0.05);
     let centre = Vec3::new(0.0, 0.3, 0.0);
     // A flat 6 × 2 × 6 cm, 60 g box resting on the palm's top face.
@@ -29,7 +35,6 @@ fn slide_angle(material: Material) -> (f32, f32) {
             Palm { center: centre, rotation: Quat::from_rotation_z(tilt), half_extents: palm_half };
         pose
     };
-    let dt = world.config().dt;
     let mut rest: Option<Vec3> = None;
     let mut first_dynamic = None;
     let mut slid = None;
@@ -75,4 +80,14 @@ fn a_grippier_material_slides_later() {
     let (angle, _) = slide_angle(Material::custom("grippy", 0.7, 0.6, 0.5));
     let expected = 0.7f32.atan().to_degrees(); // 34.99°
     assert!((angle - expected).abs() < 2.0, "slid at {angle:.2}°, expected {expected:.2}°");
+}
+
+#[test]
+fn at_a_host_engines_90_hz_the_box_still_slides_at_the_friction_angle() {
+    // μ_st 0.6: atan 0.6 = 30.96°, at a step 11 times the haptic one, where
+    // this 60 g box's springs step by backward Euler.
+    let (angle, dynamic_at) = slide_angle_at(Material::custom("tacky", 0.6, 0.5, 0.5), 1.0 / 90.0);
+    let expected = 0.6f32.atan().to_degrees();
+    assert!((angle - expected).abs() < 2.0, "slid at {angle:.2}°, expected {expected:.2}°");
+    assert!((dynamic_at - expected).abs() < 2.0, "went dynamic at {dynamic_at:.2}°");
 }

@@ -1,18 +1,18 @@
-//! README's "In a Bevy app" shows the example `tracked_hand`, which `cargo
+//! The crate's README shows the example `tracked_hand`, which `cargo
 //! test` builds: this keeps the two the same, and runs it as a user would.
 
 use std::process::Command;
 
 const EXAMPLE: &str = include_str!("../examples/tracked_hand/main.rs");
 
-/// The example's code from its first `use`: what README shows.
+/// The example's code from its first `use`: what the README shows.
 fn shown() -> &'static str {
     &EXAMPLE[EXAMPLE.find("use bevy::prelude::*;").expect("the example's uses")..]
 }
 
 #[test]
 fn readme_shows_the_example_as_it_is_in_at_most_27_lines() {
-    let readme = include_str!("../../../README.md");
+    let readme = include_str!("../README.md");
     assert!(
         readme.contains(&format!("```rust\n{}```\n", shown())),
         "update README from the example"

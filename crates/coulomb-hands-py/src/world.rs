@@ -284,20 +284,9 @@ impl World {
         let orientations = orientations
             .map(|q| arrays::rows::<4>(q, &what("orientations"), n))
             .transpose()?
-            .map(|qs| {
-                qs.into_iter()
-                    .enumerate()
-                    .map(|(j, q)| {
-                        coulomb_hands::input::layouts::rotation(q).ok_or_else(|| {
-                            LayoutError::new_err(format!(
-                                "{} joint {j}: zero-length or non-finite orientation",
-                                layout.name()
-                            ))
-                        })
-                    })
-                    .collect::<PyResult<Vec<Quat>>>()
-            })
-            .transpose()?;
+            .map(|qs| layouts::orientations(layout, &qs))
+            .transpose()
+            .map_err(|e| LayoutError::new_err(e.to_string()))?;
         let given = (radii.as_deref(), orientations.as_deref());
         let pose = layouts::hand_pose_from_joints(layout, hand, side, &positions, given.0, given.1)
             .map_err(|e| match e {

@@ -34,6 +34,7 @@ mod clear;
 mod find;
 mod follow;
 mod grab;
+mod implicit;
 mod keep;
 pub(super) mod near;
 mod share;
@@ -44,6 +45,7 @@ mod update;
 #[cfg(all(test, target_arch = "x86_64"))]
 pub(crate) use avx2::BASELINE_ONLY;
 pub(crate) use grab::GrabSlot;
+pub(crate) use implicit::ImplicitMemory;
 pub(crate) use substeps::Raised;
 
 use super::config::InteractionConfig;
@@ -119,6 +121,7 @@ impl InteractionWorld {
         self.follow_hands();
         self.clear_forces();
         contact_stages(self, &mut step);
+        self.implicit_springs(&step);
         self.scratch = step;
         self.grab_objects();
     }

@@ -14,6 +14,11 @@
 //! then needs deeper fingers for the same force: the friction threshold, a
 //! force ratio, is unchanged). This only binds for light objects in
 //! many-finger grasps, or for long steps.
+//!
+//! With the config's `step_aware` (the default), an object whose stiffness
+//! sum is over budget, and any touched object at a step longer than the
+//! haptic 2 ms, is not softened: it keeps its full γ and damping, and stage
+//! 7b (`implicit.rs`) steps its springs by backward Euler.
 
 use super::StepScratch;
 use crate::friction;
@@ -30,11 +35,16 @@ pub(crate) struct StabilityScale {
     /// How many hand contacts share the object this step (≥ 1 where any
     /// does): they share the budget of the patches' rocking springs too.
     pub contacts: u32,
+    /// Whether the object's springs keep their full γ and damping and step
+    /// by backward Euler (`implicit.rs`), where the factors would be below 1
+    /// and the config is step-aware.
+    pub implicit: bool,
 }
 
 impl StabilityScale {
     /// No limit: the object's own γ and damping.
-    pub const NONE: StabilityScale = StabilityScale { stiffness: 1.0, damping: 1.0, contacts: 1 };
+    pub const NONE: StabilityScale =
+        StabilityScale { stiffness: 1.0, damping: 1.0, contacts: 1, implicit: false };
 }
 
 /// An object's contact damping `c` before the stability limit (N·s/m).
@@ -50,7 +60,7 @@ impl InteractionWorld {
     #[inline(always)]
     pub(super) fn stability_limits(&mut self, step: &mut StepScratch) {
         let dt = self.config.dt;
-        let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0 };
+        let none = StabilityScale { stiffness: 0.0, damping: 0.0, contacts: 0, implicit: false };
         step.limits.resize(self.objects.len(), none);
         // The kept contacts, then the new ones: the order they are updated
         // in, and of their shares of their virtual fingers' γ.
@@ -92,9 +102,21 @@ impl InteractionWorld {
                 (limit.stiffness, limit.damping) = (1.0, 1.0);
                 continue;
             }
+            let (stiffness, damping) = (limit.stiffness * dt * dt, limit.damping * dt);
+            // Backward Euler where explicit springs would be unstable, and
+            // at every step longer than the haptic one, where they are
+            // stable but err: a host's 240 Hz lets a pinch at 1.2 times its
+            // threshold slip. (Where only the dampers are over budget, as
+            // for light objects at 1 kHz, softening them is stable and
+            // changes no grip.)
+            let host_rate = dt > crate::pipeline::HAPTIC_STEP;
+            if self.config.step_aware && (stiffness > 1.0 || host_rate) {
+                (limit.stiffness, limit.damping, limit.implicit) = (1.0, 1.0, true);
+                continue;
+            }
             // The sums become the factors that keep them ≤ 1.
-            limit.stiffness = (1.0 / (limit.stiffness * dt * dt)).min(1.0);
-            limit.damping = (1.0 / (limit.damping * dt)).min(1.0);
+            limit.stiffness = (1.0 / stiffness).min(1.0);
+            limit.damping = (1.0 / damping).min(1.0);
         }
     }
 }

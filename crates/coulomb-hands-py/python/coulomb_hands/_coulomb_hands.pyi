@@ -125,6 +125,7 @@ class Config:
     rolling: bool
     stribeck_speed: Optional[float]
     stability_limit: bool
+    step_aware: bool
     grab: Optional[str]
     hand_friction: bool
     tracking: Optional[dict[str, Any]]
