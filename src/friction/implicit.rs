@@ -8,14 +8,16 @@
 //! springs' forces are those at the end of the step, after the body has
 //! moved under them (Baraff and Witkin 1998, "Large steps in cloth
 //! simulation", §4, linearised as their Eq. 15). For the springs
-//! `f_i = K_i·(d_i − dt·J_i·v⁺) − C_i·J_i·(v⁺ − v)` on a body of mass
-//! matrix `M`, under the other forces `f_ext`, the velocity change solves
+//! `f_i = K_i·(d_i − dt·(J_i·v⁺ − u_i)) − C_i·J_i·(v⁺ − v)` on a body of
+//! mass matrix `M`, under the other forces `f_ext`, the velocity change
+//! solves
 //!
-//! `(M + dt·Σ J_iᵀ (C_i + dt·K_i) J_i)·Δv = dt·(f_exp − dt·Σ J_iᵀ K_i J_i·v + f_ext)`
+//! `(M + dt·Σ J_iᵀ (C_i + dt·K_i) J_i)·Δv = dt·(f_exp − dt·Σ J_iᵀ K_i (J_i·v − u_i) + f_ext)`
 //!
-//! where `f_exp` is the springs' explicit wrench (each at its full γ) and
-//! `J_i` maps the body's twist to contact `i`'s point velocity. Each
-//! contact's force then changes by `−K_i·dt·J_i·v − (C_i + dt·K_i)·J_i·Δv`.
+//! where `f_exp` is the springs' explicit wrench (each at its full γ), `J_i`
+//! maps the body's twist to contact `i`'s point velocity and `u_i` is the
+//! bone's velocity there. Each contact's force then changes by
+//! `−K_i·dt·(J_i·v − u_i) − (C_i + dt·K_i)·J_i·Δv`.
 //! An explicit integrator that applies the corrected wrench gets exactly
 //! the implicit velocity, so a host's own integrator is stable with it. In
 //! equilibrium (`v = 0`, `f_exp + f_ext = 0`) the correction is zero: a
@@ -150,8 +152,9 @@ pub fn corrected_force(
     let velocity = spring.point_velocity(body.linvel, body.angvel) - spring.bone_velocity;
     let change = spring.point_velocity(dv, dw);
     let k = spring.stiffness;
-    // The force on the bone is γ(C − p); on the object it is the opposite,
-    // so the object's motion into the bone (along −n) raises it along −n.
+    // The force on the object pushes it along −n; the object moving along
+    // +n, into the bone, deepens the press and raises that force (a
+    // negative change along +n), as moving away lessens it.
     let delta = -(velocity * (dt * k) + change * (spring.damping + dt * k));
     let n = spring.normal;
     let pressing = |f: Vec3| (-f.dot(n)).max(0.0);

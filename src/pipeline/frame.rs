@@ -98,7 +98,15 @@ impl HostFrame {
     /// A box's full size along the host's axes, along the library's: the
     /// same three lengths, the axes permuted.
     pub fn size_in(&self, size: Vec3) -> Vec3 {
-        (self.library_axes(size) * self.scale).abs()
+        self.permuted(size) * self.scale
+    }
+
+    /// `v`'s components along the library's axes, signs kept: the axes'
+    /// signed permutation without its signs (so a negative size or moment
+    /// stays negative, for the checks that refuse it).
+    fn permuted(&self, v: Vec3) -> Vec3 {
+        let a = self.axes;
+        Mat3::from_cols(a.x_axis.abs(), a.y_axis.abs(), a.z_axis.abs()) * v
     }
 
     /// A unit direction (a surface normal) in the host's axes.
@@ -136,7 +144,7 @@ impl HostFrame {
     /// permutations of each other, so the moments are permuted as a box's
     /// size is.
     pub fn inertia_in(&self, i: Vec3) -> Vec3 {
-        self.library_axes(i).abs() * (self.scale * self.scale)
+        self.permuted(i) * (self.scale * self.scale)
     }
 
     /// The proper rotation of the map: `d·P`.
@@ -216,6 +224,11 @@ mod tests {
             assert!(close(f.point_in(q * v), f.rotation_in(q) * f.point_in(v)), "{name}");
         }
         assert!(HostFrame::by_name("blender").unwrap_err().contains("unity"));
+        // A negative size or moment stays negative, for the checks to refuse.
+        for f in [HostFrame::UNITY, HostFrame::UNREAL] {
+            assert!(f.size_in(Vec3::new(1.0, -2.0, 3.0)).min_element() < 0.0);
+            assert!(f.inertia_in(Vec3::new(1.0, 2.0, -3.0)).min_element() < 0.0);
+        }
     }
 
     #[test]

@@ -14,7 +14,8 @@ use crate::scene::{Material, ObjectDesc, ObjectId, Scene, StaticDesc};
 use glam::{Quat, Vec3};
 use rapier3d::math::Pose;
 use rapier3d::prelude::{
-    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, RigidBodyType,
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+    RigidBodyType, SharedShape,
 };
 use std::any::Any;
 
@@ -130,12 +131,17 @@ impl InteractionWorld {
     /// Adds static scenery (ground, tables). Hands do not touch it.
     pub fn add_static(&mut self, desc: &StaticDesc) -> Result<ColliderHandle, WorldError> {
         let shape = firewall::fixed(desc)?;
+        Ok(self.insert_static(desc, shape))
+    }
+
+    /// Adds scenery the firewall admitted.
+    fn insert_static(&mut self, desc: &StaticDesc, shape: SharedShape) -> ColliderHandle {
         let collider = ColliderBuilder::new(shape)
             .position(Pose::from_parts(desc.position, desc.rotation))
             .friction(desc.friction);
         let body = self.physics.insert_body(RigidBodyBuilder::fixed());
         self.record(|| Call::AddStatic(desc.clone()));
-        Ok(self.physics.insert_collider(collider, Some(body)))
+        self.physics.insert_collider(collider, Some(body))
     }
 
     /// Removes static scenery added by [`Self::add_static`], with its fixed
@@ -156,8 +162,14 @@ impl InteractionWorld {
 
     /// Adds a dynamic object that hands can touch.
     pub fn add_object(&mut self, desc: &ObjectDesc) -> Result<ObjectId, WorldError> {
+        let admitted = firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
+        Ok(self.insert_object(desc, admitted))
+    }
+
+    /// Adds an object the firewall admitted.
+    fn insert_object(&mut self, desc: &ObjectDesc, admitted: firewall::Admitted) -> ObjectId {
         let firewall::Admitted { shape, hand_shape, gamma, diameter, reach, mass_properties } =
-            firewall::object(desc, self.config.gamma, self.config.gravity.length())?;
+            admitted;
         let pose = Pose::from_parts(desc.position, desc.rotation);
         let id = ObjectId(self.objects.len() as u32);
         let tag = near::object_tag(id);
@@ -191,7 +203,7 @@ impl InteractionWorld {
         });
         self.hand_shapes.push(hand_shape);
         self.record(|| Call::AddObject(desc.clone()));
-        Ok(id)
+        id
     }
 
     /// Removes an object: its body and collider leave rapier, waking what
@@ -221,19 +233,22 @@ impl InteractionWorld {
 
     /// Adds a whole scene: its ground, statics, objects and towers, in that
     /// order. Its gravity belongs to the config
-    /// ([`InteractionConfig::with_scene`]).
+    /// ([`InteractionConfig::with_scene`]). Every part is admitted before any
+    /// is added: a scene the world refuses leaves it as it was.
     pub fn add_scene(&mut self, scene: &Scene) -> Result<(), WorldError> {
-        if let Some(g) = scene.ground {
-            self.add_static(&StaticDesc::ground(g.height, g.friction))?;
+        let ground = scene.ground.map(|g| StaticDesc::ground(g.height, g.friction));
+        let statics: Vec<&StaticDesc> = ground.iter().chain(&scene.statics).collect();
+        let blocks: Vec<ObjectDesc> = scene.towers.iter().flat_map(|t| t.blocks()).collect();
+        let objects: Vec<&ObjectDesc> = scene.objects.iter().chain(&blocks).collect();
+        let fixed = statics.iter().map(|s| firewall::fixed(s)).collect::<Result<Vec<_>, _>>()?;
+        let (gamma, gravity) = (self.config.gamma, self.config.gravity.length());
+        let admitted = objects.iter().map(|o| firewall::object(o, gamma, gravity));
+        let admitted = admitted.collect::<Result<Vec<_>, _>>()?;
+        for (desc, shape) in statics.into_iter().zip(fixed) {
+            self.insert_static(desc, shape);
         }
-        for s in &scene.statics {
-            self.add_static(s)?;
-        }
-        for o in &scene.objects {
-            self.add_object(o)?;
-        }
-        for block in scene.towers.iter().flat_map(|t| t.blocks()) {
-            self.add_object(&block)?;
+        for (desc, admitted) in objects.into_iter().zip(admitted) {
+            self.insert_object(desc, admitted);
         }
         Ok(())
     }

@@ -429,3 +429,33 @@ fn a_hosts_state_is_checked_whole_before_any_of_it_is_written() {
     names(e, &["Kinematic grab baseline moves objects itself", "coulomb, thesis"]);
     assert_eq!(grab.time(), 0.0);
 }
+
+#[test]
+fn a_scene_the_world_refuses_in_part_adds_none_of_it() {
+    use coulomb_hands::scene::{Ground, Scene};
+    // Without gravity, an automatic γ (Eq. 3.11, from the weight) is zero,
+    // which the world refuses: the second object here, after a ground, a
+    // table and a fixed-γ box that it would take.
+    let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
+    let mut world = InteractionWorld::new(config).unwrap();
+    let fixed = ObjectDesc {
+        gamma: Some(GammaMode::Fixed(350.0)),
+        ..ObjectDesc::cuboid("crate", Vec3::splat(0.06), 0.2, Vec3::new(0.0, 0.03, 0.0))
+    };
+    let auto = ObjectDesc {
+        gamma: Some(GammaMode::Auto),
+        ..ObjectDesc::cuboid("tin", Vec3::splat(0.04), 0.1, Vec3::new(0.2, 0.02, 0.0))
+    };
+    let table = StaticDesc::ground(0.7, 0.4);
+    let scene = Scene {
+        ground: Some(Ground { height: 0.0, friction: 0.5 }),
+        gravity: None,
+        statics: vec![table],
+        objects: vec![fixed, auto],
+        towers: Vec::new(),
+    };
+    let err = world.add_scene(&scene).unwrap_err().to_string();
+    assert!(err.contains("tin") && err.contains("gamma"), "{err}");
+    assert_eq!(world.object_count(), 0, "no object was added");
+    assert_eq!(world.physics().colliders.len(), 0, "no ground or table was added");
+}

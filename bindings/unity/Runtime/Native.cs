@@ -100,27 +100,27 @@ namespace CoulombHands
         /// <summary>The header's CH_ABI_VERSION this layer was written for.</summary>
         public const uint AbiVersion = 1;
 
-        [DllImport(Library)] public static extern uint ch_abi_version();
-        [DllImport(Library)] public static extern Status ch_check_abi(uint version);
-        [DllImport(Library)] public static extern Status ch_last_error(byte[] message, UIntPtr len, out UIntPtr needed);
-        [DllImport(Library)] public static extern Status ch_world_new(byte[] method, byte[] configJson, out WorldHandle world);
-        [DllImport(Library)] public static extern Status ch_world_free(IntPtr world);
-        [DllImport(Library)] public static extern Status ch_world_set_frame(WorldHandle world, byte[] frame);
-        [DllImport(Library)] public static extern Status ch_world_add_ground(WorldHandle world, float height, float friction);
-        [DllImport(Library)] public static extern Status ch_world_add_box(WorldHandle world, byte[] name, Vec3 size, float mass, Vec3 position, Quat rotation, byte[] material, out uint id);
-        [DllImport(Library)] public static extern Status ch_world_add_sphere(WorldHandle world, byte[] name, float radius, float mass, Vec3 position, byte[] material, out uint id);
-        [DllImport(Library)] public static extern Status ch_world_add_scene(WorldHandle world, byte[] sceneJson, byte[] dir, out uint first, out uint count);
-        [DllImport(Library)] public static extern Status ch_world_add_hand(WorldHandle world, byte[] side, out uint hand);
-        [DllImport(Library)] public static extern Status ch_world_set_hand_joints(WorldHandle world, uint hand, byte[] layout, float[] positions, UIntPtr positionsLen, float[] radii, UIntPtr radiiLen, float[] orientations, UIntPtr orientationsLen);
-        [DllImport(Library)] public static extern Status ch_world_clear_hand(WorldHandle world, uint hand);
-        [DllImport(Library)] public static extern Status ch_world_step(WorldHandle world, uint steps);
-        [DllImport(Library)] public static extern Status ch_world_time(WorldHandle world, out double time);
-        [DllImport(Library)] public static extern Status ch_world_object_count(WorldHandle world, out uint count);
-        [DllImport(Library)] public static extern Status ch_world_object_states(WorldHandle world, [Out] ObjectState[] states, UIntPtr len, out UIntPtr needed);
-        [DllImport(Library)] public static extern Status ch_world_contacts(WorldHandle world, [Out] Contact[] contacts, UIntPtr len, out UIntPtr needed);
-        [DllImport(Library)] public static extern Status ch_world_set_host_bodies(WorldHandle world, uint[] ids, HostBody[] bodies, UIntPtr count);
-        [DllImport(Library)] public static extern Status ch_world_host_step(WorldHandle world, [Out] Wrench[] wrenches, UIntPtr len, out UIntPtr written);
-        [DllImport(Library)] public static extern Status ch_replay(byte[] path, byte[] json, UIntPtr len, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern uint ch_abi_version();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_check_abi(uint version);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_last_error(byte[] message, UIntPtr len, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_new(byte[] method, byte[] configJson, out WorldHandle world);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_free(IntPtr world);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_set_frame(WorldHandle world, byte[] frame);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_add_ground(WorldHandle world, float height, float friction);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_add_box(WorldHandle world, byte[] name, Vec3 size, float mass, Vec3 position, Quat rotation, byte[] material, out uint id);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_add_sphere(WorldHandle world, byte[] name, float radius, float mass, Vec3 position, byte[] material, out uint id);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_add_scene(WorldHandle world, byte[] sceneJson, byte[] dir, out uint first, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_add_hand(WorldHandle world, byte[] side, out uint hand);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_set_hand_joints(WorldHandle world, uint hand, byte[] layout, float[] positions, UIntPtr positionsLen, float[] radii, UIntPtr radiiLen, float[] orientations, UIntPtr orientationsLen);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_clear_hand(WorldHandle world, uint hand);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_step(WorldHandle world, uint steps);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_time(WorldHandle world, out double time);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_object_count(WorldHandle world, out uint count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_object_states(WorldHandle world, [Out] ObjectState[] states, UIntPtr len, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_contacts(WorldHandle world, [Out] Contact[] contacts, UIntPtr len, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_set_host_bodies(WorldHandle world, uint[] ids, HostBody[] bodies, UIntPtr count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_world_host_step(WorldHandle world, [Out] Wrench[] wrenches, UIntPtr len, out UIntPtr written);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)] public static extern Status ch_replay(byte[] path, byte[] json, UIntPtr len, out UIntPtr needed);
     }
 
     /// <summary>A world's handle, freed once by <c>ch_world_free</c> when disposed or

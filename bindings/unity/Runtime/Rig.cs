@@ -91,11 +91,14 @@ namespace CoulombHands
                 throw new InvalidArgumentException(string.Format(
                     "XR Hands joints: {0} values, expected {1}", xrPositions.Length,
                     3 * JointCount));
+            if (xrRadii != null && xrRadii.Length != JointCount)
+                throw new InvalidArgumentException(string.Format(
+                    "XR Hands radii: {0} values, expected {1}", xrRadii.Length, JointCount));
             for (int j = 0; j < JointCount; j++)
             {
                 int from = j == 0 ? 1 : j == 1 ? 0 : j;
                 for (int k = 0; k < 3; k++) positions[3 * j + k] = xrPositions[3 * from + k];
-                if (xrRadii != null && xrRadii.Length == JointCount) radii[j] = xrRadii[from];
+                if (xrRadii != null) radii[j] = xrRadii[from];
             }
         }
     }

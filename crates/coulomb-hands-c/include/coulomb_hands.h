@@ -48,8 +48,9 @@ typedef enum ChStatus {
 // time (calls on one world from two threads wait for each other).
 typedef size_t ChWorld;
 
-// An object's state as the host has it at the start of a step (world
-// frame: m, y up, right-handed; s; kg).
+// An object's state as the host has it at the start of a step, in the
+// world's frame and units (`ch_world_set_frame`; by default the library's:
+// right-handed, y up, m, s, kg).
 typedef struct ChHostBody {
   // The body's origin (m).
   float position[3];
@@ -69,9 +70,9 @@ typedef struct ChHostBody {
   float inertia_rotation[4];
 } ChHostBody;
 
-// What the hands did to one object in a host step: apply `force` at its
-// centre of mass and `torque` about it (AddForce and AddTorque) for the
-// step, then integrate.
+// What the hands did to one object in a host step, in the world's frame
+// and units: apply `force` at its centre of mass and `torque` about it
+// (AddForce and AddTorque) for the step, then integrate.
 typedef struct ChWrench {
   // The object's id.
   uint32_t object;
@@ -102,7 +103,8 @@ typedef struct ChQuat {
   float w;
 } ChQuat;
 
-// An object's state after a step (world frame: m, y up; s).
+// An object's state after a step, in the world's frame and units
+// (`ch_world_set_frame`; by default right-handed, y up, m, s, N).
 typedef struct ChObjectState {
   // Its origin (m).
   float position[3];
@@ -159,7 +161,8 @@ extern "C" {
 // into `message` (`len` bytes). `*needed` is always set to the bytes it
 // takes, NUL included (1 if no call failed yet): with `message` null, that
 // is all the call does. Too short a buffer is `CH_STATUS_BUFFER_TOO_SMALL`,
-// with nothing written to it. Never changes the last error itself.
+// with nothing written to it. Never changes the last error itself, and
+// never unwinds (a panic inside is `CH_STATUS_INTERNAL`).
 //
 // # Safety
 // `message` is null or points to `len` writable bytes; `needed` points to
@@ -295,9 +298,10 @@ enum ChStatus ch_world_add_hand(ChWorld world, const char *side, uint32_t *hand)
 
 // Poses a hand from a tracker's joints in `layout`'s order (`"openxr"`,
 // 26 joints; `"webxr"`, 25; `"mediapipe"`, 21): `positions` (3 floats a
-// joint, m, in the world frame: right-handed, y up), `radii` (1 a joint,
-// m; null for an average hand's) and `orientations` (4 a joint, x, y, z,
-// w; null when the tracker gives none). The lengths count floats.
+// joint), `radii` (1 a joint; null for an average hand's) and
+// `orientations` (4 a joint, x, y, z, w, the layout's joint frames; null
+// when the tracker gives none), in the world's frame and units
+// (`ch_world_set_frame`). The lengths count floats.
 //
 // # Safety
 // Each array is null or holds its length's floats; `layout` is null or
@@ -333,7 +337,8 @@ enum ChStatus ch_world_time(ChWorld world, double *time);
 enum ChStatus ch_world_object_count(ChWorld world, uint32_t *count);
 
 // Every object's state, by id, into `states` (room for `len`); `*needed`
-// is set to how many there are. With `states` null, that is all it does.
+// is set to how many there are, even when `len` is too few. With `states`
+// null, that is all it does.
 //
 // # Safety
 // `states` is null or points to `len` writable states; `needed` points to
@@ -344,8 +349,8 @@ enum ChStatus ch_world_object_states(ChWorld world,
                                      size_t *needed);
 
 // The contacts after the last step, ordered by object, hand and bone, into
-// `contacts` (room for `len`); `*needed` is set to how many there are.
-// With `contacts` null, that is all it does.
+// `contacts` (room for `len`); `*needed` is set to how many there are,
+// even when `len` is too few. With `contacts` null, that is all it does.
 //
 // # Safety
 // `contacts` is null or points to `len` writable contacts; `needed` points

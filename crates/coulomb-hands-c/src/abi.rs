@@ -11,7 +11,8 @@ pub const CH_ABI_VERSION: u32 = 1;
 /// into `message` (`len` bytes). `*needed` is always set to the bytes it
 /// takes, NUL included (1 if no call failed yet): with `message` null, that
 /// is all the call does. Too short a buffer is `CH_STATUS_BUFFER_TOO_SMALL`,
-/// with nothing written to it. Never changes the last error itself.
+/// with nothing written to it. Never changes the last error itself, and
+/// never unwinds (a panic inside is `CH_STATUS_INTERNAL`).
 ///
 /// # Safety
 /// `message` is null or points to `len` writable bytes; `needed` points to
@@ -22,15 +23,17 @@ pub unsafe extern "C" fn ch_last_error(
     len: usize,
     needed: *mut usize,
 ) -> ChStatus {
-    let text = last_error();
-    // SAFETY: the caller's contract, as `write_text` states it.
-    let status = unsafe { crate::args::write_text(&text, message, len, needed) };
-    if let Err(failure) = status {
-        // Its own failure is reported as its status only: the message it
-        // was asked for stays the last error.
-        return failure.status;
+    // Not in `call`: its own failure is reported as its status only, so
+    // that the message it was asked for stays the last error.
+    let written = std::panic::catch_unwind(|| {
+        // SAFETY: the caller's contract, as `write_text` states it.
+        unsafe { crate::args::write_text(&last_error(), message, len, needed) }
+    });
+    match written {
+        Ok(Ok(())) => ChStatus::Ok,
+        Ok(Err(failure)) => failure.status,
+        Err(_) => ChStatus::Internal,
     }
-    ChStatus::Ok
 }
 
 /// This library's ABI version ([`CH_ABI_VERSION`] when it was built).

@@ -129,8 +129,28 @@ pub unsafe fn out_slice<'a, T>(
     Ok(Some(unsafe { std::slice::from_raw_parts_mut(ptr, count) }))
 }
 
+/// An output of `count` values into `ptr` (room for `len`), with its size
+/// in `*needed`: set whatever else happens, the one value a failed call
+/// writes, so that a caller whose buffer was too short knows what to give.
+/// A null `ptr` is the size query (`None`).
+///
+/// # Safety
+/// `ptr` is null or points to `len` writable values.
+pub unsafe fn output<'a, T>(
+    ptr: *mut T,
+    len: usize,
+    count: usize,
+    needed: &mut usize,
+    arg: &str,
+) -> Result<Option<&'a mut [T]>, Failure> {
+    *needed = count;
+    // SAFETY: the caller's contract.
+    unsafe { out_slice(ptr, len, count, arg) }
+}
+
 /// Text written as NUL-terminated bytes into `buf` (`len` bytes), with
-/// `*needed` set to the bytes it takes; a null `buf` is the size query.
+/// `*needed` set to the bytes it takes ([`output`]); a null `buf` is the
+/// size query.
 ///
 /// # Safety
 /// `buf` is null or points to `len` writable bytes; `needed` is null or
@@ -146,10 +166,9 @@ pub unsafe fn write_text(
     let bytes = text.as_bytes();
     let count = bytes.len() + 1;
     // SAFETY: the caller's contract (null or `len` writable bytes).
-    if let Some(dest) = unsafe { out_slice(buf.cast::<u8>(), len, count, "buffer") }? {
+    if let Some(dest) = unsafe { output(buf.cast::<u8>(), len, count, needed, "buffer") }? {
         dest[..bytes.len()].copy_from_slice(bytes);
         dest[bytes.len()] = 0;
     }
-    *needed = count;
     Ok(())
 }

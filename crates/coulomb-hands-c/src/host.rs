@@ -10,8 +10,9 @@ use coulomb_hands::pipeline::frame::HostFrame;
 use coulomb_hands::{HandWrench, HostBody, ObjectId};
 use glam::{Quat, Vec3};
 
-/// An object's state as the host has it at the start of a step (world
-/// frame: m, y up, right-handed; s; kg).
+/// An object's state as the host has it at the start of a step, in the
+/// world's frame and units (`ch_world_set_frame`; by default the library's:
+/// right-handed, y up, m, s, kg).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ChHostBody {
@@ -33,9 +34,9 @@ pub struct ChHostBody {
     pub inertia_rotation: [f32; 4],
 }
 
-/// What the hands did to one object in a host step: apply `force` at its
-/// centre of mass and `torque` about it (AddForce and AddTorque) for the
-/// step, then integrate.
+/// What the hands did to one object in a host step, in the world's frame
+/// and units: apply `force` at its centre of mass and `torque` about it
+/// (AddForce and AddTorque) for the step, then integrate.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ChWrench {
@@ -145,8 +146,11 @@ pub unsafe extern "C" fn ch_world_host_step(
         with_world(world, |e| {
             let count = e.world.object_ids().count();
             // SAFETY: the caller's contract; checked before the step runs.
-            let dest = unsafe { out_slice(wrenches, len, count, "wrenches") }?
-                .ok_or_else(|| Failure::null("wrenches"))?;
+            let dest = match unsafe { out_slice(wrenches, len, count, "wrenches") }? {
+                Some(dest) => dest,
+                None if count == 0 => &mut [],
+                None => return Err(Failure::null("wrenches")),
+            };
             let computed = e.world.host_step().map_err(refused)?;
             for (slot, wrench) in dest.iter_mut().zip(&computed) {
                 *slot = ChWrench::of(wrench, &e.frame);

@@ -15,13 +15,14 @@
 //! - every call returns a [`ChStatus`]; on failure, `ch_last_error` gives a
 //!   message naming the call and the argument (thread-local, kept until the
 //!   thread's next failure);
-//! - a failed call writes nothing and changes nothing;
+//! - a failed call changes nothing, and writes nothing but an output's size;
 //! - no panic crosses the boundary (one is caught and is
 //!   `CH_STATUS_INTERNAL`; the world it happened in refuses further calls);
 //! - worlds are opaque handles ([`ChWorld`]) from a registry, so a freed or
 //!   made-up handle is `CH_STATUS_STALE_HANDLE`, never undefined behaviour;
 //! - arrays are borrowed with their lengths; an output's size is queried
-//!   with a null buffer;
+//!   with a null buffer, and a too-short buffer is `CH_STATUS_BUFFER_TOO_SMALL`
+//!   with the size written (the one value a failed call writes);
 //! - `ch_check_abi(CH_ABI_VERSION)` tells a header from another release;
 //! - configs and scenes are the JSON the command-line tool reads, and
 //!   recordings its files.

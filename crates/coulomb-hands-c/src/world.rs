@@ -1,7 +1,7 @@
 //! The built-in world through C: made from the CLI's config JSON, filled
 //! with scenes, objects and hands, stepped, and read back.
 
-use crate::args::{self, floats, number, optional_text, out, out_slice, text};
+use crate::args::{self, floats, number, optional_text, out, output, text};
 use crate::handles::{self, ChWorld, with_world};
 use crate::status::{ChStatus, Failure, call};
 use coulomb_hands::input::layouts::{self, Layout};
@@ -15,7 +15,8 @@ use glam::{Quat, Vec3};
 use std::ffi::c_char;
 use std::path::Path;
 
-/// An object's state after a step (world frame: m, y up; s).
+/// An object's state after a step, in the world's frame and units
+/// (`ch_world_set_frame`; by default right-handed, y up, m, s, N).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ChObjectState {
@@ -333,9 +334,10 @@ pub unsafe extern "C" fn ch_world_add_hand(
 
 /// Poses a hand from a tracker's joints in `layout`'s order (`"openxr"`,
 /// 26 joints; `"webxr"`, 25; `"mediapipe"`, 21): `positions` (3 floats a
-/// joint, m, in the world frame: right-handed, y up), `radii` (1 a joint,
-/// m; null for an average hand's) and `orientations` (4 a joint, x, y, z,
-/// w; null when the tracker gives none). The lengths count floats.
+/// joint), `radii` (1 a joint; null for an average hand's) and
+/// `orientations` (4 a joint, x, y, z, w, the layout's joint frames; null
+/// when the tracker gives none), in the world's frame and units
+/// (`ch_world_set_frame`). The lengths count floats.
 ///
 /// # Safety
 /// Each array is null or holds its length's floats; `layout` is null or
@@ -454,7 +456,8 @@ pub unsafe extern "C" fn ch_world_object_count(world: ChWorld, count: *mut u32) 
 }
 
 /// Every object's state, by id, into `states` (room for `len`); `*needed`
-/// is set to how many there are. With `states` null, that is all it does.
+/// is set to how many there are, even when `len` is too few. With `states`
+/// null, that is all it does.
 ///
 /// # Safety
 /// `states` is null or points to `len` writable states; `needed` points to
@@ -472,12 +475,11 @@ pub unsafe extern "C" fn ch_world_object_states(
         with_world(world, |e| {
             let count = e.world.object_count();
             // SAFETY: the caller's contract.
-            if let Some(dest) = unsafe { out_slice(states, len, count, "states") }? {
+            if let Some(dest) = unsafe { output(states, len, count, needed, "states") }? {
                 for (slot, (_, state)) in dest.iter_mut().zip(e.world.object_slots()) {
                     *slot = object_state(state, &e.frame);
                 }
             }
-            *needed = count;
             Ok(())
         })
     })
@@ -497,8 +499,8 @@ fn object_state(state: Option<ObjectState>, f: &HostFrame) -> ChObjectState {
 }
 
 /// The contacts after the last step, ordered by object, hand and bone, into
-/// `contacts` (room for `len`); `*needed` is set to how many there are.
-/// With `contacts` null, that is all it does.
+/// `contacts` (room for `len`); `*needed` is set to how many there are,
+/// even when `len` is too few. With `contacts` null, that is all it does.
 ///
 /// # Safety
 /// `contacts` is null or points to `len` writable contacts; `needed` points
@@ -516,7 +518,7 @@ pub unsafe extern "C" fn ch_world_contacts(
         with_world(world, |e| {
             let (all, f) = (e.world.contacts(), e.frame);
             // SAFETY: the caller's contract.
-            if let Some(dest) = unsafe { out_slice(contacts, len, all.len(), "contacts") }? {
+            if let Some(dest) = unsafe { output(contacts, len, all.len(), needed, "contacts") }? {
                 for (slot, c) in dest.iter_mut().zip(all) {
                     *slot = ChContact {
                         object: c.object.0,
@@ -533,7 +535,6 @@ pub unsafe extern "C" fn ch_world_contacts(
                     };
                 }
             }
-            *needed = all.len();
             Ok(())
         })
     })

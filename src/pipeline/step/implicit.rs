@@ -58,13 +58,26 @@ impl InteractionWorld {
             body.center_of_mass(),
             Wrench { force: body.user_force(), torque: body.user_torque() },
         );
+        let weight = Wrench { force: self.config.gravity * state.mass, torque: Vec3::ZERO };
         let external = match memory {
-            // What moved it last step besides the hands.
-            Some(m) if m.time + f64::from(dt) == time => Wrench {
-                force: (state.linvel - m.linvel) * (state.mass / dt) - m.wrench.force,
-                torque: state.inertia * ((state.angvel - m.angvel) / dt) - m.wrench.torque,
-            },
-            _ => Wrench { force: self.config.gravity * state.mass, torque: Vec3::ZERO },
+            // What moved it last step besides the hands, as far as the hands'
+            // own forces account for its departure from the weight: a table
+            // pressed by a finger, or the gravity of another host, yes; the
+            // impulse of a landing, which lasts one step, no.
+            Some(m) if m.time + f64::from(dt) == time => {
+                let seen = Wrench {
+                    force: (state.linvel - m.linvel) * (state.mass / dt) - m.wrench.force,
+                    torque: state.inertia * ((state.angvel - m.angvel) / dt) - m.wrench.torque,
+                };
+                let bound = |last: Vec3, now: Vec3| last.length() + now.length();
+                let (force, torque) = (seen.force - weight.force, seen.torque);
+                Wrench {
+                    force: weight.force
+                        + force.clamp_length_max(bound(m.wrench.force, explicit.force)),
+                    torque: torque.clamp_length_max(bound(m.wrench.torque, explicit.torque)),
+                }
+            }
+            _ => weight,
         };
         let first = self.contacts.partition_point(|c| (c.object.0 as usize) < o);
         let count = self.contacts[first..].partition_point(|c| c.object.0 as usize == o);

@@ -20,6 +20,7 @@ namespace CoulombHands.Unity
         private readonly float[][] joints = { new float[78], new float[78] };
         private readonly float[][] radii = { new float[26], new float[26] };
         private HostBody[] states;
+        private Rigidbody[] touched; // the bodies the rig has, in its order
 
         void Start()
         {
@@ -31,16 +32,25 @@ namespace CoulombHands.Unity
                 var box = body.GetComponent<BoxCollider>();
                 if (box != null)
                 {
+                    if (box.center != Vector3.zero)
+                        Debug.LogWarning(body.name + ": the box is taken as centred on its body");
                     var size = Vector3.Scale(box.size, s);
                     rig.AddBox(body.name, new Vec3(size.x, size.y, size.z), body.mass,
                                new Vec3(p.x, p.y, p.z), new Quat(q.x, q.y, q.z, q.w), material);
                     continue;
                 }
                 var ball = body.GetComponent<SphereCollider>();
+                if (ball == null)
+                {
+                    Debug.LogWarning(body.name + ": no box or sphere collider; the hands ignore it");
+                    continue;
+                }
                 float radius = ball.radius * Mathf.Max(s.x, Mathf.Max(s.y, s.z));
                 rig.AddSphere(body.name, radius, body.mass, new Vec3(p.x, p.y, p.z), material);
             }
-            states = new HostBody[bodies.Length];
+            touched = System.Array.FindAll(bodies, b =>
+                b.GetComponent<BoxCollider>() != null || b.GetComponent<SphereCollider>() != null);
+            states = new HostBody[touched.Length];
         }
 
         void FixedUpdate()
@@ -48,13 +58,13 @@ namespace CoulombHands.Unity
             if (hands == null || !hands.running) hands = FindHands();
             SetHand(0, hands == null ? default(XRHand) : hands.leftHand);
             SetHand(1, hands == null ? default(XRHand) : hands.rightHand);
-            for (int i = 0; i < bodies.Length; i++) states[i] = State(bodies[i]);
+            for (int i = 0; i < touched.Length; i++) states[i] = State(touched[i]);
             var wrenches = rig.Step(states);
             for (int i = 0; i < wrenches.Length; i++)
             {
                 var w = wrenches[i];
                 if (w.Pushed == 0) continue;
-                var body = bodies[(int)w.Object];
+                var body = touched[(int)w.Object];
                 body.AddForce(new Vector3(w.ForceX, w.ForceY, w.ForceZ), ForceMode.Force);
                 body.AddTorque(new Vector3(w.TorqueX, w.TorqueY, w.TorqueZ), ForceMode.Force);
             }
@@ -78,7 +88,12 @@ namespace CoulombHands.Unity
                 var joint = hand.GetJoint(XRHandJointIDUtility.FromIndex(j));
                 Pose pose;
                 float radius;
-                if (!joint.TryGetPose(out pose) || !joint.TryGetRadius(out radius)) radius = 0.008f;
+                if (!joint.TryGetPose(out pose))
+                {
+                    rig.SetHand(side, null, null); // a joint lost: the hand is not tracked
+                    return;
+                }
+                if (!joint.TryGetRadius(out radius)) radius = 0.008f;
                 var p = origin.TransformPoint(pose.position);
                 joints[side][3 * j] = p.x;
                 joints[side][3 * j + 1] = p.y;

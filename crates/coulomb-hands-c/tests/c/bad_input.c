@@ -157,6 +157,7 @@ int main(void) {
   OK(ch_world_add_sphere(world, "second", 0.02f, 0.07f, at, NULL, &box));
   REFUSED(ch_world_object_states(world, states, 1, &needed), CH_STATUS_BUFFER_TOO_SMALL,
           "states");
+  CHECK(needed == 2, "a too-short buffer is told the size it needs (%zu)", needed);
   REFUSED(ch_world_object_states(world, states, 1, NULL), CH_STATUS_NULL_POINTER, "needed");
   OK(ch_world_object_states(world, NULL, 0, &needed));
   CHECK(needed == 2, "two objects (%zu)", needed);
@@ -166,6 +167,13 @@ int main(void) {
   CHECK(message > sizeof tiny, "the message's size (%zu)", message);
   CHECK(ch_last_error(tiny, sizeof tiny, &message) == CH_STATUS_BUFFER_TOO_SMALL,
         "too short a buffer for the message");
+
+  /* A host with no bodies steps, with no room for wrenches. */
+  ChWorld empty = 0;
+  OK(ch_world_new(NULL, NULL, &empty));
+  OK(ch_world_host_step(empty, NULL, 0, &written));
+  CHECK(written == 0, "no wrenches (%zu)", written);
+  OK(ch_world_free(empty));
 
   /* Stale and made-up handles. */
   OK(ch_world_free(world));
