@@ -322,7 +322,8 @@ impl Contact {
     ) -> bool {
         let at = press.site;
         self.anchor.limited_depth = press.limited.max(0.0);
-        let reaction = Self::reaction(press, object, settings);
+        let relative = Self::relative_velocity(press, settings);
+        let reaction = Self::reaction(press, object, relative);
         let (gamma, mu) = (object.gamma, press.friction(object.mu, settings));
         let law = friction::contact_law(
             reaction,
@@ -335,7 +336,7 @@ impl Contact {
         );
         self.stiffness = gamma;
         self.bone_point = at.p;
-        self.bone_velocity = press.object_velocity + Self::relative_velocity(press, settings);
+        self.bone_velocity = press.object_velocity + relative;
         self.depth = press.depth;
         self.state = law.state;
         self.normal_force = law.normal.length();
@@ -387,14 +388,10 @@ impl Contact {
     /// the spring see ([`Press::seen`]), with the bone's speed into the
     /// object, relative to it, limited for the damper too.
     #[inline(always)]
-    fn reaction(press: &Press, object: &ObjectView, settings: &LawSettings) -> Vec3 {
+    fn reaction(press: &Press, object: &ObjectView, relative_velocity: Vec3) -> Vec3 {
         let at = &press.site;
         let spring = friction::spring_at_depth(object.gamma, at.c, at.p, at.n, press.seen);
-        friction::damped_spring_force(
-            spring,
-            object.damping,
-            Self::relative_velocity(press, settings),
-        )
+        friction::damped_spring_force(spring, object.damping, relative_velocity)
     }
 
     /// The bone's velocity relative to the object at the contact, its speed
