@@ -2,7 +2,8 @@
  * person does, at an engine's 1/90 s step under gravity: a 40 g box comes up with the
  * fingers and a 450 g one slips out and stays on the table (the law's threshold for this
  * squeeze, 2·μ·γ·depth/g, is 0.30 kg). Once in the built-in world (the library steps
- * rapier), once in host mode, with the host's own integrator written here. */
+ * rapier), once in host mode, with the host's own integrator written here, and once more
+ * with that host in Unreal's frame and centimetres. */
 #include <math.h>
 
 #include "check.h"
@@ -131,6 +132,69 @@ static float hosted(float mass) {
   return rise;
 }
 
+/* The same hosted lift in Unreal's frame and units (ch_world_set_frame "unreal": z up, x
+ * forward, y right, centimetres, forces in kg·cm/s²): every value the host gives and takes is
+ * Unreal's, and its integrator knows nothing of metres. Returns the rise in cm. */
+static float hosted_in_unreal(float mass) {
+  ChWorld world = 0;
+  uint32_t hands[2], box;
+  const float cm = 100.0f, table = TABLE * cm, side = SIDE * cm;
+  OK(ch_world_new(NULL, CONFIG, &world));
+  OK(ch_world_set_frame(world, "unreal"));
+  OK(ch_world_add_ground(world, table, 0.5f));
+  const ChVec3 size = {side, side, side}, at = {0.0f, 0.0f, table + side / 2};
+  const ChQuat unturned = {0.0f, 0.0f, 0.0f, 1.0f};
+  OK(ch_world_add_box(world, "box", size, mass, at, unturned, "wood", &box));
+  OK(ch_world_add_hand(world, "left", &hands[0]));
+  OK(ch_world_add_hand(world, "right", &hands[1]));
+  float z = table + side / 2, vz = 0.0f, v[2] = {0.0f, 0.0f}, xy[2] = {0.0f, 0.0f};
+  const float inertia = mass * side * side / 6; /* kg·cm² */
+  for (int s = 0; s < STEPS; s++) {
+    ChHostBody state = {
+        .position = {xy[0], xy[1], z},
+        .rotation = {0, 0, 0, 1},
+        .linvel = {v[0], v[1], vz},
+        .angvel = {0, 0, 0},
+        .mass = mass,
+        .center_of_mass = {0, 0, 0},
+        .principal_inertia = {inertia, inertia, inertia},
+        .inertia_rotation = {0, 0, 0, 1},
+    };
+    OK(ch_world_set_host_bodies(world, &box, &state, 1));
+    /* The hands as the library's frame has them, each joint moved to Unreal's: its x is the
+     * library's -z, its y the library's x, its z the library's y. */
+    float in, up, joints[3 * JOINTS], radii[JOINTS];
+    motion((float)s * DT, &in, &up);
+    for (int i = 0; i < 2; i++) {
+      const int hand_side = i == 0 ? -1 : 1;
+      pinch_hand(hand_side, (float)hand_side * (SIDE / 2 - in), TABLE + SIDE / 2 + up, 0.0f,
+                 joints, radii);
+      for (int j = 0; j < JOINTS; j++) {
+        const float x = joints[3 * j], y = joints[3 * j + 1], zl = joints[3 * j + 2];
+        joints[3 * j] = -zl * cm;
+        joints[3 * j + 1] = x * cm;
+        joints[3 * j + 2] = y * cm;
+        radii[j] *= cm;
+      }
+      OK(ch_world_set_hand_joints(world, hands[i], "openxr", joints, 3 * JOINTS, radii, JOINTS,
+                                  NULL, 0));
+    }
+    ChWrench wrench;
+    size_t written = 0;
+    OK(ch_world_host_step(world, &wrench, 1, &written));
+    /* Semi-implicit Euler in cm and s; gravity 981 cm/s² down z; the table a floor. */
+    vz += (wrench.force[2] / mass - 981.0f) * DT;
+    for (int k = 0; k < 2; k++) v[k] += wrench.force[k] / mass * DT;
+    if (z - side / 2 <= table + 1e-4f && vz <= 0.0f) vz = v[0] = v[1] = 0.0f;
+    z = fmaxf(z + vz * DT, table + side / 2);
+    for (int k = 0; k < 2; k++) xy[k] += v[k] * DT;
+  }
+  const float rise = z - (table + side / 2);
+  printf("hosted in Unreal's frame %.3f kg: rose %.2f cm\n", mass, rise);
+  OK(ch_world_free(world));
+  return rise;
+}
+
 int main(void) {
   OK(ch_check_abi(CH_ABI_VERSION));
   const float light = 0.04f, heavy = 0.45f;
@@ -143,5 +207,10 @@ int main(void) {
   CHECK(rise > LIFT - 0.01f, "the host lifts %.3f kg (rose %.4f m)", light, rise);
   rise = hosted(heavy);
   CHECK(rise < 0.01f, "the host lets %.3f kg slip (rose %.4f m)", heavy, rise);
+  /* The same in Unreal's centimetres: the law's threshold does not move with the units. */
+  rise = hosted_in_unreal(light);
+  CHECK(rise > (LIFT - 0.01f) * 100.0f, "Unreal's host lifts %.3f kg (rose %.2f cm)", light, rise);
+  rise = hosted_in_unreal(heavy);
+  CHECK(rise < 1.0f, "Unreal's host lets %.3f kg slip (rose %.2f cm)", heavy, rise);
   return failures == 0 ? 0 : 1;
 }
