@@ -56,20 +56,25 @@ pub struct ChWrench {
 
 impl ChHostBody {
     /// The core's state, every number checked finite (the core checks the
-    /// rest: unit rotations, positive mass and inertia, range).
-    fn host_body(&self, arg: &str, f: &HostFrame) -> Result<HostBody, Failure> {
-        let numbers: Vec<f32> = [
-            &self.position[..],
-            &self.rotation,
-            &self.linvel,
-            &self.angvel,
-            &[self.mass],
-            &self.center_of_mass,
-            &self.principal_inertia,
-            &self.inertia_rotation,
-        ]
-        .concat();
-        finite(&numbers, arg)?;
+    /// rest: unit rotations, positive mass and inertia, range). `index` is
+    /// its place in the batch: a message names `bodies[index].field[k]`,
+    /// built only when there is one to give.
+    fn host_body(&self, index: usize, f: &HostFrame) -> Result<HostBody, Failure> {
+        let fields: [(&str, &[f32]); 8] = [
+            ("position", &self.position),
+            ("rotation", &self.rotation),
+            ("linvel", &self.linvel),
+            ("angvel", &self.angvel),
+            ("mass", std::slice::from_ref(&self.mass)),
+            ("center_of_mass", &self.center_of_mass),
+            ("principal_inertia", &self.principal_inertia),
+            ("inertia_rotation", &self.inertia_rotation),
+        ];
+        for (field, values) in fields {
+            if values.iter().any(|v| !v.is_finite()) {
+                finite(values, &format!("bodies[{index}].{field}"))?;
+            }
+        }
         Ok(HostBody {
             position: f.point_in(Vec3::from_array(self.position)),
             rotation: f.rotation_in(Quat::from_array(self.rotation)),
@@ -115,7 +120,7 @@ pub unsafe extern "C" fn ch_world_set_host_bodies(
         let (ids, bodies) = unsafe { (slice(ids, count, "ids")?, slice(bodies, count, "bodies")?) };
         with_world(world, |e| {
             let state = |(i, (&id, body)): (usize, (&u32, &ChHostBody))| {
-                Ok((ObjectId(id), body.host_body(&format!("bodies[{i}]"), &e.frame)?))
+                Ok((ObjectId(id), body.host_body(i, &e.frame)?))
             };
             let states =
                 ids.iter().zip(bodies).enumerate().map(state).collect::<Result<Vec<_>, _>>()?;
