@@ -281,6 +281,22 @@ impl HandSample {
     pub fn from_pose(pose: HandPose) -> HandSample {
         HandSample { pose, grab: None, pinch: None, confidence: None }
     }
+
+    /// The sample `w` of the way from `self` to `other` (0 to 1): the pose
+    /// by [`HandPose::lerp`], each strength and the confidence linearly
+    /// where both have it, else the one that has it.
+    pub fn lerp(&self, other: &HandSample, w: f32) -> HandSample {
+        let mix = |a: Option<f32>, b: Option<f32>| match (a, b) {
+            (Some(a), Some(b)) => Some(a + (b - a) * w),
+            (a, b) => a.or(b),
+        };
+        HandSample {
+            pose: self.pose.lerp(&other.pose, w),
+            grab: mix(self.grab, other.grab),
+            pinch: mix(self.pinch, other.pinch),
+            confidence: mix(self.confidence, other.confidence),
+        }
+    }
 }
 
 /// Positions beyond this distance from the origin (m) are rejected as

@@ -206,14 +206,5 @@ pub fn interpolate(samples: &[(f64, HandSample)], t: f64, grace: f64) -> Option<
         return None;
     }
     let w = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0) as f32;
-    let mix = |a: Option<f32>, b: Option<f32>| match (a, b) {
-        (Some(a), Some(b)) => Some(a + (b - a) * w),
-        (a, b) => a.or(b),
-    };
-    Some(HandSample {
-        pose: s0.pose.lerp(&s1.pose, w),
-        grab: mix(s0.grab, s1.grab),
-        pinch: mix(s0.pinch, s1.pinch),
-        confidence: mix(s0.confidence, s1.confidence),
-    })
+    Some(s0.lerp(s1, w))
 }

@@ -13,9 +13,16 @@
 //! contacts are its own.
 //!
 //! The library keeps of each object what its contacts need: its shape (for
-//! the contact queries) and material, and the state the host last gave,
-//! written into the body it keeps for it, which rapier never steps in this
-//! mode. [`InteractionWorld::step`] is the same stages followed by the
+//! the contact queries) and material, and the state the host last gave:
+//! its pose and centre of mass in the object's slot, its velocities and
+//! mass properties on the body it keeps for it, which rapier never steps
+//! in this mode, and its collider where the pose puts it. The body's own
+//! pose is left as it was (rapier's `set_position` recomputes the world
+//! inertia, which no stage reads) until rapier steps the world again
+//! ([`InteractionWorld::step_physics`] first writes it), or a program
+//! takes it ([`InteractionWorld::physics_mut`]).
+//!
+//! [`InteractionWorld::step`] is the same stages followed by the
 //! built-in host, rapier: stage 7 writes the wrenches straight into its
 //! bodies, and [`InteractionWorld::step_physics`] integrates them.
 //! [`InteractionWorld::integrate_wrenches`] is that built-in host offered to
@@ -95,35 +102,38 @@ impl InteractionWorld {
     /// inertia) before anything is written; a rejected state leaves the
     /// world as it was.
     pub fn set_host_body(&mut self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
-        self.check_host_body(id, state)?;
-        self.write_host_body(id, state);
+        let new_mass = self.check_host_body(id, state)?;
+        self.write_host_body(id, state, new_mass);
         Ok(())
     }
 
-    /// Writes a state [`Self::check_host_body`] passed.
-    fn write_host_body(&mut self, id: ObjectId, state: &HostBody) {
-        let mass = MassState::of(state);
+    /// Writes a state [`Self::check_host_body`] passed; `new_mass` is
+    /// what it said of the mass properties.
+    fn write_host_body(&mut self, id: ObjectId, state: &HostBody, new_mass: bool) {
         let slot = &mut self.objects[id.0 as usize];
-        let new_mass = slot.host_mass != Some(mass);
-        slot.mass = state.mass;
-        slot.host_mass = Some(mass);
         let (body, collider, reach) = (slot.body, slot.collider, slot.reach);
-        let physics = &mut self.physics;
-        // Compared as `HostBody::of_rapier` reads them, so mass properties
-        // the host read from rapier and gives back are left to the bit.
-        if new_mass && MassState::of(&HostBody::of_rapier(&physics.bodies[body])) != mass {
-            let props = MassProperties::with_principal_inertia_frame(
-                state.center_of_mass,
-                state.mass,
-                state.principal_inertia,
-                unit(state.inertia_rotation),
-            );
-            physics.colliders[collider].set_mass_properties(props);
-            physics.bodies[body].recompute_mass_properties_from_colliders(&physics.colliders);
+        if new_mass {
+            let mass = MassState::of(state);
+            (slot.mass, slot.host_mass) = (state.mass, Some(mass));
+            let physics = &mut self.physics;
+            // Compared as `HostBody::of_rapier` reads them, so mass
+            // properties the host read from rapier and gives back are left
+            // to the bit.
+            if MassState::of(&HostBody::of_rapier(&physics.bodies[body])) != mass {
+                let props = MassProperties::with_principal_inertia_frame(
+                    state.center_of_mass,
+                    state.mass,
+                    state.principal_inertia,
+                    unit(state.inertia_rotation),
+                );
+                physics.colliders[collider].set_mass_properties(props);
+                physics.bodies[body].recompute_mass_properties_from_colliders(&physics.colliders);
+            }
         }
-        let rigid = &mut physics.bodies[body];
+        let physics = &mut self.physics;
+        let slot = &self.objects[id.0 as usize];
         let (from, to) =
-            (*rigid.position(), Pose::from_parts(state.position, unit(state.rotation)));
+            (slot.pose(&physics.bodies), Pose::from_parts(state.position, unit(state.rotation)));
         // Turned about its origin by at most π·|Δq| (rad), either sign of
         // q (no trigonometry), so no point moved farther than this.
         let (a, b) = (from.rotation, to.rotation);
@@ -131,9 +141,10 @@ impl InteractionWorld {
         let turned = std::f32::consts::PI * chord;
         let moved = from.translation.distance(to.translation) + turned * reach;
         self.host_moved = self.host_moved.max(moved);
-        rigid.set_position(to, false);
+        let rigid = &mut physics.bodies[body];
         rigid.set_linvel(state.linvel, false);
         rigid.set_angvel(state.angvel, false);
+        let com = to.transform_point(rigid.mass_properties().local_mprops.local_com);
         // Its collider where rapier's step would put it (rapier's own
         // propagation visits every body changed since its last step, which
         // in this mode is every body, every call).
@@ -144,6 +155,7 @@ impl InteractionWorld {
         // search takes its exact box (`step/near.rs`), and asks afresh the
         // step it is first hosted.
         let slot = &mut self.objects[id.0 as usize];
+        (slot.host_pose, slot.host_com) = (to, com);
         if !slot.hosted {
             slot.hosted = true;
             self.hosted.push(id.0);
@@ -161,20 +173,27 @@ impl InteractionWorld {
             self.check_host_body(*id, state)?;
         }
         for (id, state) in bodies {
-            self.write_host_body(*id, state);
+            // Asked again: an id given twice has its mass properties new
+            // only the first time.
+            let new_mass = self.objects[id.0 as usize].host_mass != Some(MassState::of(state));
+            self.write_host_body(*id, state, new_mass);
         }
         Ok(())
     }
 
     /// Whether `state` may be set on object `id` (mass properties a host
-    /// gave last are checked already).
-    fn check_host_body(&self, id: ObjectId, state: &HostBody) -> Result<(), WorldError> {
+    /// gave last are checked already), and whether its mass properties
+    /// are new.
+    fn check_host_body(&self, id: ObjectId, state: &HostBody) -> Result<bool, WorldError> {
         let slot = self.slot(id)?;
-        check_motion(&slot.name, state)?;
-        if slot.host_mass != Some(MassState::of(state)) {
+        if !usual_motion(state) {
+            check_motion(&slot.name, state)?;
+        }
+        let new_mass = slot.host_mass != Some(MassState::of(state));
+        if new_mass {
             check_mass(&slot.name, state)?;
         }
-        Ok(())
+        Ok(new_mass)
     }
 
     /// Host mode: one step without the engine. Stages 0 to 7 run as in
@@ -185,7 +204,7 @@ impl InteractionWorld {
     /// which a host's bodies cannot be made to do from here: they are an
     /// error, before anything runs.
     pub fn host_step(&mut self) -> Result<Vec<HandWrench>, WorldError> {
-        self.host_mode()?;
+        self.check_host_mode()?;
         self.apply_hand_forces();
         self.host_forces()
     }
@@ -194,7 +213,7 @@ impl InteractionWorld {
     /// [`Self::step_physics`] is the built-in step's: the wrenches, then the
     /// step ends with nothing integrated.
     pub fn host_forces(&mut self) -> Result<Vec<HandWrench>, WorldError> {
-        self.host_mode()?;
+        self.check_host_mode()?;
         let wrenches = self.wrenches();
         self.record(|| super::Call::HostStep);
         // The hosted objects' first step is done: from now on their exact
@@ -205,8 +224,23 @@ impl InteractionWorld {
         Ok(wrenches)
     }
 
-    /// Whether this world's method can run in host mode.
-    fn host_mode(&self) -> Result<(), WorldError> {
+    /// Before rapier steps the world itself: each object a host set since
+    /// rapier's last step gets the host's pose on its body, and is rapier's
+    /// again until a host sets it.
+    pub(in crate::pipeline) fn unhost(&mut self) {
+        for o in self.hosted.drain(..) {
+            let slot = &mut self.objects[o as usize];
+            slot.hosted = false;
+            if let Some(body) = self.physics.bodies.get_mut(slot.body) {
+                body.set_position(slot.host_pose, false);
+            }
+        }
+    }
+
+    /// Whether this world's method can run in host mode (the grab
+    /// baselines cannot): what [`Self::host_step`] checks before it runs,
+    /// for a binding that prepares the step first.
+    pub fn check_host_mode(&self) -> Result<(), WorldError> {
         match self.config.grab {
             Some(grab) => Err(WorldError::HostGrab(grab)),
             None => Ok(()),
@@ -218,8 +252,8 @@ impl InteractionWorld {
     fn wrenches(&self) -> Vec<HandWrench> {
         let live = self.objects.iter().enumerate().filter(|(_, o)| !o.removed);
         live.map(|(i, slot)| {
-            let body = &self.physics.bodies[slot.body];
             let (force, torque) = if slot.pushed {
+                let body = &self.physics.bodies[slot.body];
                 (body.user_force(), body.user_torque())
             } else {
                 (Vec3::ZERO, Vec3::ZERO)
@@ -272,7 +306,21 @@ impl MassState {
     }
 }
 
-/// A host's pose and velocities of object `name`, before any is written.
+/// Whether a host's pose and velocities pass [`check_motion`], told in one
+/// test without naming a field: the usual case, on every call.
+#[inline(always)]
+fn usual_motion(s: &HostBody) -> bool {
+    let all_finite = s.linvel.is_finite() & s.angvel.is_finite() & s.position.is_finite();
+    // (`max_element` passes NaN over, hence the test above.)
+    let placed = s.position.abs().max_element() <= crate::hand::MAX_COORDINATE;
+    // |q|² within 1e-3 of 1 is |q| within 5e-4 of it, inside `unit_quat`.
+    let turned = (s.rotation.length_squared() - 1.0).abs() <= 1.0e-3;
+    all_finite & placed & turned
+}
+
+/// A host's pose and velocities of object `name`, before any is written,
+/// the field at fault named.
+#[cold]
 fn check_motion(name: &str, s: &HostBody) -> Result<(), WorldError> {
     finite(name, "linvel", s.linvel)?;
     finite(name, "angvel", s.angvel)?;

@@ -51,7 +51,10 @@ use crate::hand::acting::ActingHand;
 use crate::hand::{HandPose, Side};
 use crate::scene::Material;
 use glam::Vec3;
-use rapier3d::prelude::{ColliderHandle, PhysicsWorld, RigidBodyHandle, SharedShape};
+use rapier3d::math::Pose;
+use rapier3d::prelude::{
+    ColliderHandle, PhysicsWorld, RigidBody, RigidBodyHandle, RigidBodySet, SharedShape,
+};
 use step::StepScratch;
 
 /// What the world keeps per object besides rapier's body.
@@ -75,10 +78,18 @@ pub(in crate::pipeline) struct ObjectSlot {
     pub reseat: bool,
     /// Whether it is in [`InteractionWorld::forced`].
     pub forced: bool,
-    /// Whether a host sets its state ([`InteractionWorld::hosted`]), and
-    /// the mass properties it gave last.
+    /// Whether a host has set its state since rapier last stepped it
+    /// ([`InteractionWorld::hosted`]), and the mass properties it gave
+    /// last.
     pub hosted: bool,
     pub host_mass: Option<host::MassState>,
+    /// While hosted: the pose the host gave last and its centre of mass
+    /// in the world (m). Its body keeps only its velocities, mass and the
+    /// hands' forces: rapier's `set_position` would also recompute a world
+    /// inertia nobody reads in this mode. [`ObjectSlot::pose`] and
+    /// [`ObjectSlot::center_of_mass`] read whichever holds.
+    pub host_pose: Pose,
+    pub host_com: Vec3,
     /// Whether a hand pushed it this step: stage 7 set a force on its
     /// body and woke it (its contacts may all have hovered).
     pub pushed: bool,
@@ -94,6 +105,19 @@ pub(in crate::pipeline) struct ObjectSlot {
     /// Euler (`step/implicit.rs`), from which the next step tells the other
     /// forces on it.
     pub implicit: Option<step::ImplicitMemory>,
+}
+
+impl ObjectSlot {
+    /// Its body's origin: the host's pose while hosted, else its body's.
+    pub(in crate::pipeline) fn pose(&self, bodies: &RigidBodySet) -> Pose {
+        if self.hosted { self.host_pose } else { *bodies[self.body].position() }
+    }
+
+    /// Its centre of mass in the world (m), of `body`, its own.
+    pub(in crate::pipeline) fn center_of_mass(&self, body: &RigidBody) -> Vec3 {
+        // The place chosen, then one load: this is read per contact.
+        *if self.hosted { &self.host_com } else { &body.mass_properties().world_com }
+    }
 }
 
 /// What the world keeps per hand.

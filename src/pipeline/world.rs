@@ -104,7 +104,11 @@ impl InteractionWorld {
     }
 
     /// The rapier world, for reading and for advanced set-up (joints,
-    /// solver parameters). Hands never appear in it.
+    /// solver parameters). Hands never appear in it. In host mode an
+    /// object's collider is where the host last put it, but its body's
+    /// pose is not written until rapier steps the world or
+    /// [`Self::physics_mut`] is called: read the pose from
+    /// [`Self::object_state`].
     pub fn physics(&self) -> &PhysicsWorld {
         &self.physics
     }
@@ -119,6 +123,8 @@ impl InteractionWorld {
     /// body's own `additional_solver_iterations` are kept (an object the
     /// hands push runs at least [`super::HAND_SUBSTEPS`] for that step).
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
+        // What is handed out is current: a host's poses on their bodies.
+        self.unhost();
         self.external = true;
         &mut self.physics
     }
@@ -196,6 +202,8 @@ impl InteractionWorld {
             pushed: false,
             hosted: false,
             host_mass: None,
+            host_pose: Pose::IDENTITY,
+            host_com: Vec3::ZERO,
             raised: None,
             grab: Default::default(),
             removed: false,
@@ -424,11 +432,13 @@ impl InteractionWorld {
         slot.reseat = true;
         self.reseating.push(id.0);
         self.end_grab(id.0 as usize);
-        let slot = &self.objects[id.0 as usize];
+        let slot = &mut self.objects[id.0 as usize];
         if let Some(body) = self.physics.bodies.get_mut(slot.body) {
             body.set_position(Pose::from_parts(position, rotation), true);
             body.set_linvel(Vec3::ZERO, true);
             body.set_angvel(Vec3::ZERO, true);
+            // A hosted one too is here until its host sets it again.
+            (slot.host_pose, slot.host_com) = (*body.position(), body.center_of_mass());
         }
         // rapier moves colliders with their bodies only in its step; the
         // contacts found before it must see the object where it now is.
@@ -443,9 +453,10 @@ impl InteractionWorld {
     pub fn object_state(&self, id: ObjectId) -> Result<ObjectState, WorldError> {
         let slot = self.slot(id)?;
         let body = &self.physics.bodies[slot.body];
+        let pose = slot.pose(&self.physics.bodies);
         Ok(ObjectState {
-            position: body.translation(),
-            rotation: *body.rotation(),
+            position: pose.translation,
+            rotation: pose.rotation,
             linvel: body.linvel(),
             angvel: body.angvel(),
             hand_force: slot.hand_force,

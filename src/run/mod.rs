@@ -14,6 +14,9 @@
 //! * [`demo`]: the scripted grasp-lift-carry demo;
 //! * [`report`]: the scenario and replay runs that `coulomb-hands report`
 //!   shows;
+//! * [`sampled`]: a hand a program poses at its own frame or tracker rate,
+//!   stepped at the physics rate (the rule the Bevy plugin and the web page
+//!   share);
 //! * [`mod@bench`]: the benchmark scenes, their timing and MuJoCo's side;
 //! * [`clock`]: the wall clock the timed runs are given;
 //! * [`euler_host`]: a host engine in a few lines, semi-implicit Euler, for
@@ -33,6 +36,7 @@ pub mod live;
 pub mod observe;
 pub mod replay;
 pub mod report;
+pub mod sampled;
 pub mod scenario;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod soak;

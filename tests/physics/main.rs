@@ -12,6 +12,7 @@ mod controls;
 mod energy;
 mod evaluation;
 mod flat;
+mod frames;
 mod glitch;
 mod grasp;
 mod grip;
@@ -55,6 +56,24 @@ pub fn parked_hand(side: Side) -> HandPose {
         }
     }
     pose
+}
+
+/// An adult right hand about the origin, palm down, pointing along +x with
+/// its index straight and the other fingers curled, and the tip of its
+/// index (the end of its distal capsule).
+pub fn pointing_hand() -> (HandPose, Vec3) {
+    let rig = HandRig::adult(Side::Right);
+    let down = coulomb_hands::Palm::from_normal_direction(
+        Vec3::ZERO,
+        -Vec3::Y,
+        Vec3::X,
+        rig.palm_half_extents,
+    )
+    .expect("a palm");
+    let pointing = rig.pose(Vec3::ZERO, down.rotation, [1.0, 0.0, 1.0, 1.0, 1.0]);
+    let index = pointing.fingers[coulomb_hands::Finger::Index as usize][2];
+    let tip = index.b + (index.b - index.a).normalize() * index.radius;
+    (pointing, tip)
 }
 
 /// Puts one capsule bone into a pose.

@@ -4,7 +4,7 @@
 
 use super::*;
 use coulomb_hands::run::bench::keep_awake;
-use coulomb_hands::{Finger, InteractionConfig, ObjectDesc, Palm, StaticDesc};
+use coulomb_hands::{Finger, InteractionConfig, ObjectDesc, StaticDesc};
 
 const HALF: f32 = 0.025;
 
@@ -40,13 +40,8 @@ fn push_with(config: InteractionConfig, tip_height: f32, ground_mu: f32, aside: 
         keep_awake(&mut world);
     }
     let hand = world.add_hand(Side::Right);
-    let rig = HandRig::adult(Side::Right);
-    let palm =
-        Palm::from_normal_direction(Vec3::ZERO, -Vec3::Y, Vec3::X, rig.palm_half_extents).unwrap();
-    let pointing = rig.pose(Vec3::ZERO, palm.rotation, [1.0, 0.0, 1.0, 1.0, 1.0]);
+    let (pointing, tip) = pointing_hand();
     // Shift the hand so the index tip starts 2 cm before the box's face.
-    let index = pointing.fingers[Finger::Index as usize][2];
-    let tip = index.b + (index.b - index.a).normalize() * index.radius;
     let offset = Vec3::new(start.x - HALF - 0.02, tip_height, 0.0) - tip;
     let mut other_bones = 0;
     run(

@@ -4,24 +4,26 @@
 //!
 //! The plugin adds a hand to the world for each such entity, and again to
 //! any [`HandPhysics`] that replaces the world, so the entity outlives
-//! worlds. Each physics step reads the newest input, held until the next
-//! write: the app writes at its frame or tracker rate, the physics samples
-//! at its own. Despawning the entity leaves its hand untracked (its
-//! contacts end).
+//! worlds. The app writes at its frame or tracker rate, the physics steps
+//! at its own: each write is due when the physics reaches the frame's time,
+//! and the frame's steps take the hand there in a straight line from where
+//! it was, by the core's one rule for such hands
+//! ([`coulomb_hands::run::sampled`]), rather than holding it still and
+//! jumping. Despawning the entity leaves its hand untracked (its contacts
+//! end).
 //!
 //! Any other core [`HandSource`] (a scenario's hand, a recording's track,
 //! the live Leap stream's [`coulomb_hands::run::live::LiveFeed`] hands,
 //! which never block a frame) is added with [`HandPhysics::add_hand`].
 
+use crate::clock::HandClock;
 use crate::physics::HandPhysics;
 use crate::reflect::SideReflect;
 use bevy::prelude::*;
 use coulomb_hands::hand::{HandPose, HandSample, Side};
 pub use coulomb_hands::input::layouts::JointsError;
 use coulomb_hands::input::layouts::{Joint, Layout, hand_pose_from_joints, openxr};
-use coulomb_hands::run::RunError;
-use coulomb_hands::run::drive::HandSource;
-use std::sync::{Arc, Mutex, PoisonError};
+use coulomb_hands::run::sampled::SampledHand;
 
 /// A hand whose poses the app's own systems write into its
 /// [`HandInput`]. Spawn it, and the plugin makes it an
@@ -98,39 +100,20 @@ pub fn openxr_sample(
     Ok(HandSample::from_pose(pose))
 }
 
-/// The newest input of an [`AppHand`], shared by its entity and its
-/// world's source.
-type Slot = Arc<Mutex<Option<HandSample>>>;
-
-/// An [`AppHand`]'s place in the current world: its source's slot. Its
-/// drop (the entity despawned, or the world replaced) leaves the hand
-/// untracked.
+/// An [`AppHand`]'s place in the current world: its source, whose clone
+/// the world steps. Its drop (the entity despawned, or the world replaced)
+/// leaves the hand untracked.
 #[derive(Component, Debug)]
 pub(crate) struct AppHandLink {
     /// The [`HandPhysics::serial`] of the world it is in.
     pub serial: u64,
-    slot: Slot,
+    hand: SampledHand,
 }
 
 impl Drop for AppHandLink {
     fn drop(&mut self) {
-        *self.slot.lock().unwrap_or_else(PoisonError::into_inner) = None;
-    }
-}
-
-/// The world's side of an [`AppHand`]: each step takes the newest input.
-struct PushedSource {
-    side: Side,
-    slot: Slot,
-}
-
-impl HandSource for PushedSource {
-    fn side(&self) -> Side {
-        self.side
-    }
-
-    fn sample(&mut self, _t: f64) -> Result<Option<HandSample>, RunError> {
-        Ok(self.slot.lock().unwrap_or_else(PoisonError::into_inner).clone())
+        // A due time is finite: this cannot fail.
+        let _ = self.hand.set(0.0, None);
     }
 }
 
@@ -139,17 +122,31 @@ pub(crate) fn attach(
     physics: &mut HandPhysics,
     hand: AppHand,
 ) -> (coulomb_hands::hand::HandId, AppHandLink) {
-    let slot = Slot::default();
-    let id = physics.add_hand(PushedSource { side: hand.side, slot: Arc::clone(&slot) });
-    (id, AppHandLink { serial: physics.serial(), slot })
+    let source = SampledHand::new(hand.side);
+    let id = physics.add_hand(source.clone());
+    (id, AppHandLink { serial: physics.serial(), hand: source })
 }
 
 /// An app hand whose input changed, or which was just linked to a world.
 type NewInput = Or<(Changed<HandInput>, Added<AppHandLink>)>;
 
-/// Hands each app hand's newest input to its world's source.
-pub(crate) fn push_inputs(hands: Query<(&HandInput, &AppHandLink), NewInput>) {
+/// Hands each app hand's newest input to its world's source, due at the
+/// last of the steps this frame runs ([`crate::clock::run_steps`] counts
+/// them the same way).
+pub(crate) fn push_inputs(
+    hands: Query<(&HandInput, &AppHandLink), NewInput>,
+    physics: Option<Res<HandPhysics>>,
+    clock: Res<Time<HandClock>>,
+    time: Res<Time>,
+) {
+    let Some(physics) = physics else { return };
+    let dt = physics.timestep();
+    let ahead = clock.context().overstep() + time.delta();
+    let steps = ahead.as_nanos().checked_div(dt.as_nanos()).unwrap_or(0);
+    let last = steps.saturating_sub(1) as f64 * dt.as_secs_f64();
+    let due = physics.world().time() + last;
     for (input, link) in &hands {
-        *link.slot.lock().unwrap_or_else(PoisonError::into_inner) = input.sample.clone();
+        // The world's time and a frame's delta are finite.
+        let _ = link.hand.set(due, input.sample.clone());
     }
 }

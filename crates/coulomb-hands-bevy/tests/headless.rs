@@ -243,6 +243,56 @@ fn an_app_hand_poses_the_world_by_its_input_and_loses_its_contacts_untracked() {
     assert!(app.world().resource::<Contacts>().0.is_empty());
 }
 
+/// The palm's x of every step's first driven hand (m), as the driver gave it.
+#[derive(Clone, Default)]
+struct Palms(std::sync::Arc<std::sync::Mutex<Vec<f32>>>);
+
+impl coulomb_hands::run::drive::Observer for Palms {
+    fn after_step(&mut self, step: &StepView) -> Result<(), coulomb_hands::run::RunError> {
+        let x = step.hands[0].sample.as_ref().map_or(f32::NAN, |s| s.pose.palm.center.x);
+        self.0.lock().unwrap().push(x);
+        Ok(())
+    }
+}
+
+#[test]
+fn an_app_hands_input_is_reached_at_the_frames_last_step_from_where_it_was() {
+    let (world, _) = cube_world();
+    let mut physics = HandPhysics::new(world);
+    let palms = Palms::default();
+    physics.observe(palms.clone());
+    // 8 ms frames: 8 steps of 1 ms each.
+    let mut app = app(physics, Duration::from_millis(8));
+    let entity = app.world_mut().spawn(AppHand::new(Side::Right)).id();
+    app.update();
+    let far = |x: f32| {
+        closed_claw().transformed(
+            glam::Vec3::ZERO,
+            glam::Quat::IDENTITY,
+            glam::Vec3::new(x, 0.5, 0.0),
+        )
+    };
+    app.world_mut().get_mut::<HandInput>(entity).unwrap().set_pose(far(0.0));
+    app.update();
+    app.world_mut().get_mut::<HandInput>(entity).unwrap().set_pose(far(0.024));
+    app.update();
+    app.update();
+    let seen = palms.0.lock().unwrap().clone();
+    let x0 = far(0.0).palm.center.x;
+    let moved: Vec<f32> = seen.iter().rev().take(24).rev().map(|x| x - x0).collect();
+    // Found: there at once, held; then 3 mm a step to 24 mm at the frame's
+    // last step; then held.
+    let want: Vec<f32> = (0..24)
+        .map(|k| match k {
+            0..8 => 0.0,
+            8..16 => 0.003 * (k - 7) as f32,
+            _ => 0.024,
+        })
+        .collect();
+    let close = moved.iter().zip(&want).all(|(a, b)| (a - b).abs() < 1e-5);
+    assert!(close, "moved {moved:?}, want {want:?}");
+}
+
 /// What the cube's observers saw, in order.
 #[derive(Resource, Default)]
 struct CubeEvents(Vec<(&'static str, Entity, f64)>);

@@ -132,7 +132,7 @@ typedef struct ChContact {
   // The bone: 0 the palm, then 1 + 3 × finger + phalanx (thumb first;
   // proximal, middle, distal).
   uint32_t bone;
-  // Its friction state: 0 static, 1 sliding, 2 separated (hovering
+  // Its friction state: 0 static, 1 dynamic (sliding), 2 separated (hovering
   // within the release offset; the library's `FrictionState::code`).
   uint32_t state;
   // C, the contact's anchor on the object's surface (m).
@@ -320,7 +320,10 @@ enum ChStatus ch_world_set_hand_joints(ChWorld world,
 enum ChStatus ch_world_clear_hand(ChWorld world, uint32_t hand);
 
 // `steps` steps of the built-in world (each the config's `dt`): the
-// hands' contact forces, then rapier.
+// hands' contact forces, then rapier. A hand posed since the last steps
+// goes there in a straight line over these, from where it was, and is
+// there at the last of them (posed before each single step, it is there
+// at once); a hand first seen is there at once.
 enum ChStatus ch_world_step(ChWorld world, uint32_t steps);
 
 // The world's simulated time (s), into `*time`.

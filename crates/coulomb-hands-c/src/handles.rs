@@ -5,6 +5,7 @@
 use crate::status::{ChStatus, Failure};
 use coulomb_hands::InteractionWorld;
 use coulomb_hands::pipeline::frame::HostFrame;
+use coulomb_hands::run::sampled::FrameHands;
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
@@ -13,10 +14,13 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 /// time (calls on one world from two threads wait for each other).
 pub type ChWorld = usize;
 
-/// A world and the frame its caller speaks in (`ch_world_set_frame`).
+/// A world, the frame its caller speaks in (`ch_world_set_frame`), and
+/// its hands' poses on their way to the caller's newest (the core's rule
+/// for a hand posed once for several steps).
 pub struct Entry {
     pub world: InteractionWorld,
     pub frame: HostFrame,
+    pub hands: FrameHands,
 }
 
 /// One world, locked while a call uses it.
@@ -42,7 +46,7 @@ pub fn insert(world: InteractionWorld) -> Result<ChWorld, Failure> {
     registry.next = handle
         .checked_add(1)
         .ok_or_else(|| Failure::new(ChStatus::Internal, "world handles exhausted"))?;
-    let entry = Entry { world, frame: HostFrame::LIBRARY };
+    let entry = Entry { world, frame: HostFrame::LIBRARY, hands: FrameHands::default() };
     registry.live.insert(handle, Arc::new(Mutex::new(entry)));
     Ok(handle)
 }

@@ -156,6 +156,10 @@ pub unsafe extern "C" fn ch_world_host_step(
                 None if count == 0 => &mut [],
                 None => return Err(Failure::null("wrenches")),
             };
+            // The hands posed for this step, once it is known to run.
+            e.world.check_host_mode().map_err(refused)?;
+            e.hands.begin(&e.world, 1);
+            e.hands.pose(&mut e.world).map_err(refused)?;
             let computed = e.world.host_step().map_err(refused)?;
             for (slot, wrench) in dest.iter_mut().zip(&computed) {
                 *slot = ChWrench::of(wrench, &e.frame);

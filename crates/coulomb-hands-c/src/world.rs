@@ -4,6 +4,7 @@
 use crate::args::{self, floats, number, optional_text, out, output, text};
 use crate::handles::{self, ChWorld, with_world};
 use crate::status::{ChStatus, Failure, call};
+use coulomb_hands::hand::HandSample;
 use coulomb_hands::input::layouts::{self, Layout};
 use coulomb_hands::pipeline::frame::HostFrame;
 use coulomb_hands::scene::Scene;
@@ -48,7 +49,7 @@ pub struct ChContact {
     /// The bone: 0 the palm, then 1 + 3 × finger + phalanx (thumb first;
     /// proximal, middle, distal).
     pub bone: u32,
-    /// Its friction state: 0 static, 1 sliding, 2 separated (hovering
+    /// Its friction state: 0 static, 1 dynamic (sliding), 2 separated (hovering
     /// within the release offset; the library's `FrictionState::code`).
     pub state: u32,
     /// C, the contact's anchor on the object's surface (m).
@@ -401,7 +402,8 @@ pub unsafe extern "C" fn ch_world_set_hand_joints(
                 orientations.as_deref(),
             )
             .map_err(|e| Failure::invalid("positions", e))?;
-            e.world.set_hand_pose(HandId(hand), &pose).map_err(refused)
+            let sample = Some(HandSample::from_pose(pose));
+            e.hands.set(&mut e.world, HandId(hand), sample).map_err(refused)
         })
     })
 }
@@ -410,19 +412,19 @@ pub unsafe extern "C" fn ch_world_set_hand_joints(
 #[unsafe(no_mangle)]
 pub extern "C" fn ch_world_clear_hand(world: ChWorld, hand: u32) -> ChStatus {
     call("ch_world_clear_hand", || {
-        with_world(world, |e| e.world.clear_hand_pose(HandId(hand)).map_err(refused))
+        with_world(world, |e| e.hands.set(&mut e.world, HandId(hand), None).map_err(refused))
     })
 }
 
 /// `steps` steps of the built-in world (each the config's `dt`): the
-/// hands' contact forces, then rapier.
+/// hands' contact forces, then rapier. A hand posed since the last steps
+/// goes there in a straight line over these, from where it was, and is
+/// there at the last of them (posed before each single step, it is there
+/// at once); a hand first seen is there at once.
 #[unsafe(no_mangle)]
 pub extern "C" fn ch_world_step(world: ChWorld, steps: u32) -> ChStatus {
     call("ch_world_step", || {
-        with_world(world, |e| {
-            (0..steps).for_each(|_| e.world.step());
-            Ok(())
-        })
+        with_world(world, |e| e.hands.step(&mut e.world, steps as usize).map_err(refused))
     })
 }
 

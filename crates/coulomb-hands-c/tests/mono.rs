@@ -1,7 +1,8 @@
 //! The Unity package's C# (`bindings/unity/Runtime`, but for the one file
 //! that needs UnityEngine), compiled with Mono's `mcs` with its tests
 //! (`bindings/unity/Tests/Mono`) and run under `mono` against the shared
-//! library this test build made. Mono is Debian's `mono-devel`, in
+//! library this test build made, placed in the package's Linux plugin
+//! folder. Mono is Debian's `mono-devel`, in
 //! README's install line.
 
 use coulomb_hands_c::{ChContact, ChHostBody, ChObjectState, ChWrench};
@@ -28,6 +29,14 @@ fn the_unity_package_pinches_and_refuses_bad_input_under_mono() {
     );
     let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("mono");
     std::fs::create_dir_all(&out).unwrap();
+    // Loaded from the package's own Linux plugin folder, as its README
+    // says to place it (a copy of the folder, so the checkout stays clean).
+    let platform = Path::new("Runtime/Plugins/Linux/x86_64");
+    assert!(unity.join(platform).is_dir(), "the package has no {}", platform.display());
+    let plugins = out.join(platform);
+    std::fs::create_dir_all(&plugins).unwrap();
+    let name = "libcoulomb_hands_c.so";
+    std::fs::copy(library.join(name), plugins.join(name)).unwrap();
     let exe = out.join("CoulombHandsTests.exe");
     let mut files = sources(&unity.join("Runtime"));
     files.extend(sources(&unity.join("Tests/Mono")));
@@ -53,7 +62,7 @@ fn the_unity_package_pinches_and_refuses_bad_input_under_mono() {
         .arg(&exe)
         .args(sizes.map(|s| s.to_string()))
         .arg(unity.join("Samples~/HandCubeTable"))
-        .env("LD_LIBRARY_PATH", &library)
+        .env("LD_LIBRARY_PATH", &plugins)
         .current_dir(unity.join("../.."))
         .output()
         .expect("mono runs: install mono-devel (README's apt line)");

@@ -100,11 +100,13 @@ pub fn vec3(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec3> {
     Ok(Vec3::from_array(column(value, what, Some(3))?.try_into().unwrap_or_default()))
 }
 
-/// A quaternion: 4 numbers, x, y, z, w (not normalised here: the library
-/// checks it is a unit quaternion).
+/// A rotation: 4 numbers, x, y, z, w, made a unit quaternion as every
+/// binding makes one (`layouts::rotation`); a zero-length or non-finite
+/// one is a `ShapeError` naming the argument.
 pub fn quat(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Quat> {
     let q: [f32; 4] = column(value, what, Some(4))?.try_into().unwrap_or_default();
-    Ok(Quat::from_array(q))
+    coulomb_hands::input::layouts::rotation(q)
+        .ok_or_else(|| ShapeError::new_err(format!("{what}: zero-length or non-finite rotation")))
 }
 
 /// An `(n, C)` float64 array of `rows`.

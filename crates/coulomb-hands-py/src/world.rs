@@ -4,8 +4,10 @@ use crate::arrays::{self, points_array, quats_array, values_array};
 use crate::config::Config;
 use crate::values;
 use crate::{ArgumentError, LayoutError, SkeletonError, world_error};
+use coulomb_hands::hand::{HandPose, HandSample};
 use coulomb_hands::input::layouts::{self, JointsError, Layout};
 use coulomb_hands::run::bench;
+use coulomb_hands::run::sampled::FrameHands;
 use coulomb_hands::scene::mesh::TriangleMesh;
 use coulomb_hands::scene::{MeshBody, MeshShape, Scene};
 use coulomb_hands::{
@@ -25,6 +27,9 @@ const DETACHED_STEPS: usize = 8;
 #[pyclass(module = "coulomb_hands")]
 pub struct World {
     world: InteractionWorld,
+    /// The hands' poses on their way to the newest set (the core's rule
+    /// for a hand posed once for several steps).
+    hands: FrameHands,
 }
 
 /// `left` or `right`.
@@ -62,6 +67,13 @@ impl World {
         Ok(self.world.add_object(&desc).map_err(world_error)?.0)
     }
 
+    /// Hand `hand` posed at the next step or steps (lost for `None`); a
+    /// bad hand or pose changes nothing.
+    fn pose(&mut self, hand: u32, pose: Option<HandPose>) -> PyResult<()> {
+        let sample = pose.map(HandSample::from_pose);
+        self.hands.set(&mut self.world, HandId(hand), sample).map_err(world_error)
+    }
+
     fn hand(&self, hand: u32) -> PyResult<Side> {
         self.world
             .hand_side(HandId(hand))
@@ -76,7 +88,8 @@ impl World {
     #[pyo3(signature = (config = None))]
     fn new(config: Option<Config>) -> PyResult<Self> {
         let config = config.map_or_else(InteractionConfig::default, |c| *c.inner());
-        Ok(World { world: InteractionWorld::new(config).map_err(world_error)? })
+        let world = InteractionWorld::new(config).map_err(world_error)?;
+        Ok(World { world, hands: FrameHands::default() })
     }
 
     /// The benchmark's reference scene (the CLI's `bench`): a ground, the
@@ -92,7 +105,7 @@ impl World {
         if awake {
             bench::keep_awake(&mut world);
         }
-        Ok(World { world })
+        Ok(World { world, hands: FrameHands::default() })
     }
 
     /// The settings the world was made with.
@@ -294,14 +307,14 @@ impl World {
                 JointsError::Skeleton(e) => SkeletonError::new_err(e.to_string()),
                 JointsError::Pose(e) => world_error(e.into()),
             })?;
-        self.world.set_hand_pose(HandId(hand), &pose).map_err(world_error)
+        self.pose(hand, Some(pose))
     }
 
     /// Poses a hand's 16 bones directly: a dict of arrays as `hand_pose`
     /// returns.
     fn set_hand_pose(&mut self, hand: u32, pose: &Bound<'_, PyAny>) -> PyResult<()> {
         let pose = arrays::pose_from_dict(pose)?;
-        self.world.set_hand_pose(HandId(hand), &pose).map_err(world_error)
+        self.pose(hand, Some(pose))
     }
 
     /// The hand that acts as a dict of arrays, or None if untracked: the
@@ -312,7 +325,8 @@ impl World {
         self.world.hand_pose(HandId(hand)).map(|p| arrays::pose_dict(py, p)).transpose()
     }
 
-    /// The hand as it was last set, or None if untracked.
+    /// The hand as the tracker gave it to the last step, or None if
+    /// untracked.
     fn tracked_pose<'py>(
         &self,
         py: Python<'py>,
@@ -331,25 +345,33 @@ impl World {
 
     /// Marks a hand untracked: its contacts end at the next step.
     fn clear_hand(&mut self, hand: u32) -> PyResult<()> {
-        self.world.clear_hand_pose(HandId(hand)).map_err(world_error)
+        self.hands.set(&mut self.world, HandId(hand), None).map_err(world_error)
     }
 
-    /// `n` steps: each the hands' forces, then rapier's step. Long runs let
-    /// other Python threads run meanwhile.
+    /// `n` steps: each the hands' forces, then rapier's step. A hand posed
+    /// since the last steps goes there in a straight line over these, from
+    /// where it was, and is there at the last of them (posed before each
+    /// single step, it is there at once; first seen, it is there at once).
+    /// Long runs let other Python threads run meanwhile.
     #[pyo3(signature = (n = 1))]
-    fn step(&mut self, py: Python<'_>, n: usize) {
-        let world = &mut self.world;
-        if n < DETACHED_STEPS {
-            (0..n).for_each(|_| world.step());
+    fn step(&mut self, py: Python<'_>, n: usize) -> PyResult<()> {
+        let (world, hands) = (&mut self.world, &mut self.hands);
+        let run = if n < DETACHED_STEPS {
+            hands.step(world, n)
         } else {
-            py.detach(|| (0..n).for_each(|_| world.step()));
-        }
+            py.detach(|| hands.step(world, n))
+        };
+        run.map_err(world_error)
     }
 
-    /// A step's first half: contacts found and updated, their forces given
-    /// to rapier. Nothing has moved yet; add forces, then `step_physics()`.
-    fn apply_hand_forces(&mut self) {
+    /// A step's first half: the hands posed, contacts found and updated,
+    /// their forces given to rapier. Nothing has moved yet; add forces,
+    /// then `step_physics()`.
+    fn apply_hand_forces(&mut self) -> PyResult<()> {
+        self.hands.begin(&self.world, 1);
+        self.hands.pose(&mut self.world).map_err(world_error)?;
         self.world.apply_hand_forces();
+        Ok(())
     }
 
     /// A step's second half: rapier's step.

@@ -3,6 +3,7 @@ world that refused a call goes on as if it had never been made."""
 
 from __future__ import annotations
 
+import math
 from typing import Any, Callable
 
 import numpy as np
@@ -29,6 +30,18 @@ def test_wrong_shapes_raise_shape_errors_naming_the_argument() -> None:
     pose = far_hand()
     pose["capsule_a"] = pose["capsule_a"][:14]
     raises(ch.ShapeError, lambda: world.set_hand_pose(hand, pose), "capsule_a", "(15, 3)")
+
+
+def test_a_rotation_is_made_a_unit_quaternion_as_every_binding_makes_it() -> None:
+    world = ch.World()
+    half_turn = math.sqrt(0.5)
+    # 3 times a quarter turn about y: taken as the quarter turn, as C and the page take it.
+    box = world.add_box("b", [0.1, 0.2, 0.3], 1.0, [0, 1, 0], rotation=[0, 3 * half_turn, 0, 3 * half_turn])
+    turned = world.object_states()["rotation"][box]
+    assert np.allclose(turned, [0, half_turn, 0, half_turn], atol=1e-6), turned
+    raises(ch.ShapeError, lambda: world.add_box("z", [0.1] * 3, 1.0, [0, 1, 0], rotation=[0, 0, 0, 0]),
+           "rotation", "zero-length")
+    assert world.object_names() == ["b"]
 
 
 def test_nan_is_named_where_it_is() -> None:

@@ -70,7 +70,11 @@ def jittered_pinch(config: ch.Config, seed: int) -> tuple[ch.World, int, int, fl
         for key in ("palm_center", "capsule_a", "capsule_b"):
             pose[key] = still[key] + rng.normal(0.0, 0.0017, still[key].shape)
         world.set_hand_pose(hand, pose)
-        world.step(10)
+        # Held for the sample's 10 steps, as a tracker that samples and holds: posed
+        # before a single step, then stepped on. (`step(10)` would ramp the hand to each
+        # sample over its 10 steps; tests/physics/frames.rs, and the book, compare.)
+        for _ in range(10):
+            world.step()
     return world, box, hand, tip_error(world.tracked_pose(hand), still)
 
 

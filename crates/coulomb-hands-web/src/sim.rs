@@ -6,6 +6,7 @@
 use crate::arrays;
 use coulomb_hands::files::NoFiles;
 use coulomb_hands::hand::rig::HandRig;
+use coulomb_hands::hand::{HandPose, HandSample};
 use coulomb_hands::input::capture;
 use coulomb_hands::input::layouts::{self, Layout};
 use coulomb_hands::input::playback::{DEFAULT_GRACE, Playback};
@@ -15,6 +16,7 @@ use coulomb_hands::run::closing::Closings;
 use coulomb_hands::run::demo::GraspLiftCarry;
 use coulomb_hands::run::drive::{Driver, Observer, PoseFn};
 use coulomb_hands::run::replay::{GraspObject, replay_world};
+use coulomb_hands::run::sampled::FrameHands;
 use coulomb_hands::run::scenario::check::{Check, History};
 use coulomb_hands::run::scenario::{self, Scenario, ScenarioHand, ScenarioReport};
 use coulomb_hands::scene::Scene;
@@ -99,6 +101,12 @@ pub struct Sim {
     script_steps: Option<usize>,
     /// A name for the page.
     name: String,
+    /// The hands the page poses once per frame (the mouse's, the
+    /// headset's): the frame's steps take each from where it was to its
+    /// frame's pose, by the core's rule for a hand sampled at a display's
+    /// rate ([`coulomb_hands::run::sampled`]), instead of holding it for
+    /// the frame's steps and then jumping.
+    posed: FrameHands,
 }
 
 /// A hand side by name.
@@ -125,7 +133,8 @@ pub fn shipped_names() -> Vec<String> {
 
 impl Sim {
     fn new(world: InteractionWorld, script: Script, steps: Option<usize>, name: &str) -> Sim {
-        Sim { driver: Driver::new(world), script, script_steps: steps, name: name.into() }
+        let driver = Driver::new(world);
+        Sim { driver, script, script_steps: steps, name: name.into(), posed: FrameHands::default() }
     }
 
     /// An empty world with `config`.
@@ -284,13 +293,17 @@ impl Sim {
         self.driver.steps()
     }
 
-    /// Up to `n` steps, each its hands posed (the script's, or as last
-    /// set), the hand forces, rapier's step; a script stops at its end.
-    /// Returns the steps run.
+    /// Up to `n` steps, each its hands posed (the script's, and the
+    /// page's on their way to the poses it set since the last steps,
+    /// reached at the last of these `n`), the hand forces, rapier's step; a script
+    /// stops at its end. Returns the steps run.
     pub fn step(&mut self, n: usize) -> Result<usize, Error> {
         let left = self.script_steps.map_or(n, |total| total.saturating_sub(self.steps()));
+        let n = n.min(left);
+        self.posed.begin(self.driver.world(), n);
         let mut run = 0;
-        for _ in 0..n.min(left) {
+        for _ in 0..n {
+            text(self.posed.pose(self.driver.world_mut()))?;
             let mut observers: Vec<&mut dyn Observer> = match &mut self.script {
                 Script::Free | Script::Recording { closings: None } | Script::Capture { .. } => {
                     Vec::new()
@@ -356,6 +369,17 @@ impl Sim {
         self.world_mut().add_hand(side).0
     }
 
+    /// Hand `hand` posed by `sample` at the next steps (lost for `None`),
+    /// reached at the last of them; a bad hand or pose changes nothing.
+    fn pose(&mut self, hand: u32, sample: Option<HandSample>) -> Result<(), Error> {
+        text(self.posed.set(self.driver.world_mut(), HandId(hand), sample))
+    }
+
+    /// [`Sim::pose`] of a pose with no tracker strengths.
+    fn pose_bones(&mut self, hand: u32, pose: HandPose) -> Result<(), Error> {
+        self.pose(hand, Some(HandSample::from_pose(pose)))
+    }
+
     /// Poses a hand from WebXR Hand Input's 25 joints, wrist first:
     /// positions (75 numbers, m, y up), radii (25, m), and orientations
     /// (100: x, y, z, w each) if given.
@@ -377,14 +401,14 @@ impl Sim {
         let given = (Some(radii), quats.as_deref());
         let pose =
             text(layouts::hand_pose_from_joints(webxr, hand, side, &positions, given.0, given.1))?;
-        text(self.world_mut().set_hand_pose(HandId(hand), &pose))
+        self.pose_bones(hand, pose)
     }
 
     /// Poses a hand's 16 bones from [`arrays::POSE`] numbers.
     pub fn set_hand_pose(&mut self, hand: u32, pose: &[f32]) -> Result<(), Error> {
         self.hand(hand)?;
         let pose = arrays::pose_from(pose)?;
-        text(self.world_mut().set_hand_pose(HandId(hand), &pose))
+        self.pose_bones(hand, pose)
     }
 
     /// Poses a hand as the rig's adult hand of its side: the palm's centre
@@ -410,12 +434,12 @@ impl Sim {
             ));
         }
         let pose = HandRig::adult(side).pose_opposed(palm, rotation, curl, opposition);
-        text(self.world_mut().set_hand_pose(HandId(hand), &pose))
+        self.pose_bones(hand, pose)
     }
 
     /// Marks a hand untracked: its contacts end at the next step.
     pub fn clear_hand(&mut self, hand: u32) -> Result<(), Error> {
-        text(self.world_mut().clear_hand_pose(HandId(hand)))
+        self.pose(hand, None)
     }
 
     /// A hand's acting pose as [`arrays::POSE`] numbers, or empty while it

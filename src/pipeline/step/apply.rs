@@ -99,7 +99,7 @@ impl Stage<'_> {
             pushed: false,
             dynamic,
             alike: dynamic && sums_alike(force, total),
-            center_of_mass: body.center_of_mass(),
+            center_of_mass: slot.center_of_mass(body),
         }
     }
 

@@ -47,7 +47,8 @@ impl InteractionWorld {
         let slot = &self.objects[o];
         let body = &self.physics.bodies[slot.body];
         let props = &body.mass_properties().local_mprops;
-        let axes = Mat3::from_quat(*body.rotation() * props.principal_inertia_local_frame);
+        let rotation = slot.pose(&self.physics.bodies).rotation;
+        let axes = Mat3::from_quat(rotation * props.principal_inertia_local_frame);
         let state = Body {
             mass: props.mass(),
             inertia: axes * Mat3::from_diagonal(props.principal_inertia()) * axes.transpose(),
@@ -55,7 +56,7 @@ impl InteractionWorld {
             angvel: body.angvel(),
         };
         let (center, explicit) = (
-            body.center_of_mass(),
+            slot.center_of_mass(body),
             Wrench { force: body.user_force(), torque: body.user_torque() },
         );
         let weight = Wrench { force: self.config.gravity * state.mass, torque: Vec3::ZERO };

@@ -132,6 +132,7 @@ impl InteractionWorld {
     /// bone velocities.
     pub fn step_physics(&mut self) {
         self.record(|| Call::Step);
+        self.unhost();
         self.set_substeps();
         self.physics.step();
         // rapier's broad phase has now seen every object where it was.
@@ -230,7 +231,7 @@ fn view_of<'c>(
         shape: hand_shapes.get(index).and_then(|s| s.as_deref()).unwrap_or(collider.shape()),
         linvel: body.linvel(),
         angvel: body.angvel(),
-        center_of_mass: body.center_of_mass(),
+        center_of_mass: slot.center_of_mass(body),
         inv_inertia: body.mass_properties().local_mprops.inv_principal_inertia.max_element(),
         sharing: limit.contacts.max(1) as f32,
         gamma: slot.gamma * limit.stiffness,

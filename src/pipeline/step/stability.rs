@@ -83,7 +83,7 @@ impl InteractionWorld {
                     let inv_inertia =
                         body.mass_properties().local_mprops.inv_principal_inertia.max_element();
                     let damping = nominal_damping(&self.config, slot);
-                    *body_of.insert((o, body.center_of_mass(), inv_inertia, damping))
+                    *body_of.insert((o, slot.center_of_mass(body), inv_inertia, damping))
                 }
             };
             let r = c.point - center_of_mass;

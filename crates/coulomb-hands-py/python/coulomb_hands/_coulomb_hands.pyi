@@ -242,18 +242,21 @@ class World:
         last step (the pose set, for a hand tracked since), the tracked hand with the
         tracker's jitter taken out by `config.tracking`."""
     def tracked_pose(self, hand: int) -> Optional[HandPose]:
-        """The hand as it was last set, or None while untracked."""
+        """The hand as the tracker gave it to the last step, or None while untracked."""
     def hand_jitter(self, hand: int) -> Optional[float]:
         """The jitter measured on the hand (m, rms per axis, the hand's own tremor of
         about 30 µm included; 0 until measured), or None when `config.tracking` is None."""
     def clear_hand(self, hand: int) -> None:
         """Marks a hand untracked: its contacts end at the next step."""
     def step(self, n: int = 1) -> None:
-        """`n` steps of `config.dt`, each the hands' forces then rapier's step. Other
-        Python threads run meanwhile when `n` is 8 or more."""
+        """`n` steps of `config.dt`, each the hands' forces then rapier's step. A hand
+        posed since the last steps goes there in a straight line over these, from where
+        it was, and is there at the last of them (posed before each single step, or
+        first seen, it is there at once). Other Python threads run meanwhile when `n` is
+        8 or more."""
     def apply_hand_forces(self) -> None:
-        """A step's first half: contacts found and updated, their forces given to
-        rapier, nothing moved yet."""
+        """A step's first half: the hands posed, contacts found and updated, their forces
+        given to rapier, nothing moved yet."""
     def step_physics(self) -> None:
         """A step's second half: rapier's step."""
     def object_names(self) -> list[Optional[str]]:
