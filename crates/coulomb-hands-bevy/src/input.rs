@@ -12,9 +12,10 @@
 //! jumping. Despawning the entity leaves its hand untracked (its contacts
 //! end).
 //!
-//! Any other core [`HandSource`] (a scenario's hand, a recording's track,
-//! the live Leap stream's [`coulomb_hands::run::live::LiveFeed`] hands,
-//! which never block a frame) is added with [`HandPhysics::add_hand`].
+//! Any other core [`HandSource`](coulomb_hands::run::drive::HandSource)
+//! (a scenario's hand, a recording's track, the live Leap stream's
+//! [`coulomb_hands::run::live::LiveFeed`] hands, which never block a
+//! frame) is added with [`HandPhysics::add_hand`].
 
 use crate::clock::HandClock;
 use crate::physics::HandPhysics;
