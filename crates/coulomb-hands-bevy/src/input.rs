@@ -5,8 +5,8 @@
 //! The plugin adds a hand to the world for each such entity, and again to
 //! any [`HandPhysics`] that replaces the world, so the entity outlives
 //! worlds. The app writes at its frame or tracker rate, the physics steps
-//! at its own: each write is due when the physics reaches the frame's time,
-//! and the frame's steps take the hand there in a straight line from where
+//! at its own: each write is due at the last of the frame's steps, and
+//! the frame's steps take the hand there in a straight line from where
 //! it was, by the core's one rule for such hands
 //! ([`coulomb_hands::run::sampled`]), rather than holding it still and
 //! jumping. Despawning the entity leaves its hand untracked (its contacts
