@@ -26,6 +26,14 @@
 //! two sides of a grip open together: a thumb that opened ahead of a
 //! finger would push the object out instead of letting it go.
 //!
+//! A tracker whose every frame is off alike (white jitter, a webcam's
+//! landmarks) is smoothed no slower than a white cutoff: what a faster
+//! filter passes of it is small and alike every frame. A tracker whose
+//! error is its rare glitches (a Leap's, fingers hidden in a fist) is
+//! not: what a faster filter passes of a glitch is a finger thrown
+//! centimetres. The jitter meter's whiteness tells one from the other
+//! ([`super::jitter`], [`super::one_euro::WHITENESS_POWER`]).
+//!
 //! A point that keeps still acts exactly where it is tracked: the filters
 //! keep lags, not positions.
 
@@ -65,12 +73,14 @@ impl Default for TrackingFilter {
                 beta: 0.025,
                 derivative_cutoff: 1.0,
                 least_cutoff: 0.0,
+                white_cutoff: 10.0,
             },
             shape: OneEuro {
                 min_cutoff: 1.0,
                 beta: 0.0025,
                 derivative_cutoff: 1.0,
                 least_cutoff: 2.0,
+                white_cutoff: 6.0,
             },
             jitter_window: 2.0,
         }
@@ -89,12 +99,14 @@ impl TrackingFilter {
             "tracking.gross.beta",
             "tracking.gross.derivative_cutoff",
             "tracking.gross.least_cutoff",
+            "tracking.gross.white_cutoff",
         ])?;
         self.shape.validate([
             "tracking.shape.min_cutoff",
             "tracking.shape.beta",
             "tracking.shape.derivative_cutoff",
             "tracking.shape.least_cutoff",
+            "tracking.shape.white_cutoff",
         ])?;
         let w = self.jitter_window;
         if !(w.is_finite() && w > 0.0 && w <= MAX_JITTER_WINDOW) {
@@ -196,8 +208,16 @@ impl ActingHand {
         let gross = gross_position(&raw);
         let shape = raw.map(|x| x - gross);
         self.observe(gross, &shape, dt);
-        let gross_step = self.filter.gross.step(tracker_jitter(self.gross_jitter.jitter()), dt);
-        let shape_step = self.filter.shape.step(tracker_jitter(self.jitter()), dt);
+        let gross_step = self.filter.gross.step(
+            tracker_jitter(self.gross_jitter.jitter()),
+            self.gross_jitter.whiteness(),
+            dt,
+        );
+        let shape_step = self.filter.shape.step(
+            tracker_jitter(self.jitter()),
+            self.shape_jitter.whiteness(),
+            dt,
+        );
         let behind = self.gross.advance(gross, &gross_step);
         let lags = self.advance_shape(&shape, behind, &shape_step);
         let palm_extents = tracked.palm.half_extents;

@@ -42,6 +42,15 @@ pub fn tracker_jitter(measured: f32) -> f32 {
     (measured * measured - TREMOR * TREMOR).max(0.0).sqrt()
 }
 
+/// The median over the mean of white noise's mean square over `n` points:
+/// a χ² of k = 3n degrees of freedom, whose median is about
+/// k·(1 − 2/9k)³ (Wilson & Hilferty 1931). So white noise reads a
+/// whiteness of 1 however many points share it.
+fn white_median(n: usize) -> f32 {
+    let b = 1.0 - 2.0 / (27.0 * n as f32);
+    b * b * b
+}
+
 /// The quadratic Savitzky–Golay smoothing weight of the sample `i` places
 /// from the centre (Savitzky & Golay 1964): the parabola fitted by least
 /// squares through the span, read at its centre.
@@ -67,6 +76,9 @@ pub struct JitterMeter<const N: usize> {
     /// The history sorted, reused.
     scratch: Vec<f32>,
     jitter: f32,
+    /// The history's mean (m²): above the median's square by as much as
+    /// the tracker glitches.
+    mean_square: f32,
 }
 
 impl<const N: usize> JitterMeter<N> {
@@ -82,6 +94,7 @@ impl<const N: usize> JitterMeter<N> {
             window,
             scratch: Vec::with_capacity(window),
             jitter: 0.0,
+            mean_square: 0.0,
         }
     }
 
@@ -143,6 +156,21 @@ impl<const N: usize> JitterMeter<N> {
         let middle = self.scratch.len() / 2;
         let (_, median, _) = self.scratch.select_nth_unstable_by(middle, f32::total_cmp);
         self.jitter = median.sqrt();
+        self.mean_square = self.history.iter().sum::<f32>() / self.history.len() as f32;
+    }
+
+    /// How white the jitter is, in [0, 1]: its median mean square over its
+    /// mean, the share of its power that an ordinary sample has, over
+    /// white noise's own share. About 1 for white noise, whose every
+    /// sample is off alike; near 0 for a tracker whose error is its rare
+    /// glitches, whose power the median does not see. 0 until measured.
+    pub fn whiteness(&self) -> f32 {
+        let median = self.jitter * self.jitter;
+        if self.mean_square > 0.0 {
+            (median / self.mean_square / white_median(N)).min(1.0)
+        } else {
+            0.0
+        }
     }
 }
 
@@ -188,6 +216,27 @@ mod tests {
         // variance per axis; the median of 16 noisy axes reads a little low.
         let expected = 0.0013 * (2.0f32 / 3.0).sqrt();
         assert!((noisy.jitter() - expected).abs() < 0.1 * expected, "{}", noisy.jitter());
+    }
+
+    #[test]
+    fn white_noise_is_white_and_rare_glitches_are_not() {
+        // Two still points under 0.9 mm of white noise a sample, and under
+        // a glitch of 6 mm on one sample in forty: most of the glitches'
+        // power lies in their rare samples and their neighbours'.
+        let mut white = JitterMeter::<2>::new(1.5);
+        let mut glitchy = JitterMeter::<2>::new(1.5);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(23);
+        let normal = Normal::new(0.0f32, 0.0009).unwrap();
+        let at = [Vec3::new(0.1, 0.25, -0.05), Vec3::new(0.13, 0.24, -0.04)];
+        assert_eq!(white.whiteness(), 0.0);
+        for k in 0..2500 {
+            let mut shake = || Vec3::from_array([(); 3].map(|_| normal.sample(&mut rng)));
+            white.observe(&[at[0] + shake(), at[1] + shake()], 0.001);
+            let thrown = if (k / 10) % 40 == 5 { Vec3::Z * 0.006 } else { Vec3::ZERO };
+            glitchy.observe(&[at[0] + thrown, at[1]], 0.001);
+        }
+        assert!(white.whiteness() > 0.85, "{}", white.whiteness());
+        assert!(glitchy.whiteness() < 0.1, "{}", glitchy.whiteness());
     }
 
     #[test]

@@ -34,15 +34,23 @@ pub struct OneEuro {
     /// after the hand has lifted ([`OneEuro::step`]). 0: none.
     #[serde(default)]
     pub least_cutoff: f32,
+    /// The lowest cutoff of a still point under white jitter (Hz): a
+    /// tracker whose every frame is off alike, without glitches, is
+    /// smoothed no slower than this. It falls steeply as the jitter is
+    /// less white ([`OneEuro::step`]), so a tracker whose error is its
+    /// rare glitches keeps [`OneEuro::least_cutoff`]. 0: none.
+    #[serde(default)]
+    pub white_cutoff: f32,
 }
 
 impl OneEuro {
     /// Checks that every field is finite, the cutoffs positive (the least
-    /// cutoff ≥ 0) and `beta` not negative; the error names the field by
-    /// `names`, the names of `min_cutoff`, `beta`, `derivative_cutoff` and
-    /// `least_cutoff` where the filter is set.
-    pub fn validate(&self, names: [&'static str; 4]) -> Result<(), (&'static str, String)> {
-        let [min_cutoff, beta, derivative_cutoff, least_cutoff] = names;
+    /// and white cutoffs ≥ 0) and `beta` not negative; the error names the
+    /// field by `names`, the names of `min_cutoff`, `beta`,
+    /// `derivative_cutoff`, `least_cutoff` and `white_cutoff` where the
+    /// filter is set.
+    pub fn validate(&self, names: [&'static str; 5]) -> Result<(), (&'static str, String)> {
+        let [min_cutoff, beta, derivative_cutoff, least_cutoff, white_cutoff] = names;
         for (field, v) in
             [(min_cutoff, self.min_cutoff), (derivative_cutoff, self.derivative_cutoff)]
         {
@@ -50,7 +58,12 @@ impl OneEuro {
                 return Err((field, format!("must be a positive number of Hz, got {v}")));
             }
         }
-        for (field, v) in [(beta, self.beta), (least_cutoff, self.least_cutoff)] {
+        let fields = [
+            (beta, self.beta),
+            (least_cutoff, self.least_cutoff),
+            (white_cutoff, self.white_cutoff),
+        ];
+        for (field, v) in fields {
             if !(v.is_finite() && v >= 0.0) {
                 return Err((field, format!("must be finite and ≥ 0, got {v}")));
             }
@@ -58,6 +71,15 @@ impl OneEuro {
         Ok(())
     }
 }
+
+/// How sharply [`OneEuro::white_cutoff`] is kept for white jitter: it is
+/// scaled by the whiteness to this power. A Leap Motion's jitter, mostly
+/// glitches, reads a whiteness of 0.2–0.66 on the hand's shape (15
+/// leapjs-playback recordings), white noise 0.98 at 100 frames a second
+/// and 0.78 at 30, where interpolated frames make it uneven: at the fourth
+/// power the Leap's keeps a fifth of the white cutoff at most, white
+/// noise 0.37–0.92 of it (the book's "Tracking noise").
+pub const WHITENESS_POWER: i32 = 4;
 
 /// The jitter (m) under which a still point's cutoff is
 /// [`OneEuro::min_cutoff`].
@@ -84,11 +106,23 @@ impl OneEuro {
     /// the hand had lifted. A reach-to-grasp closes its aperture over its
     /// last 200–300 ms (Jeannerod 1984); a cutoff of 2 Hz, a time constant
     /// of 80 ms, keeps the lag within a third of that.
+    ///
+    /// Under white jitter the least cutoff is [`OneEuro::white_cutoff`]
+    /// times its `whiteness` (in [0, 1], [`super::jitter`]: the share of
+    /// the jitter's power that an ordinary sample has, 1 for white noise)
+    /// to the [`WHITENESS_POWER`]. What a faster filter lets through of
+    /// white jitter is small and alike every frame, and a grip holds
+    /// through it; what it lets through of a glitch is a finger thrown
+    /// centimetres, which drops what it holds. So the more of the jitter's
+    /// power lies in rare samples, the closer the least cutoff stays to
+    /// [`OneEuro::least_cutoff`].
     #[inline]
-    pub fn step(&self, jitter: f32, dt: f32) -> EuroStep {
+    pub fn step(&self, jitter: f32, whiteness: f32, dt: f32) -> EuroStep {
         // 2π·dt per jitter width: the cutoff's terms, as smoothing factors.
         let per_width = std::f32::consts::TAU * dt / jitter;
-        let least = std::f32::consts::TAU * dt * self.least_cutoff;
+        let white = self.white_cutoff * whiteness.clamp(0.0, 1.0).powi(WHITENESS_POWER);
+        let least_cutoff = self.least_cutoff.max(white);
+        let least = std::f32::consts::TAU * dt * least_cutoff;
         EuroStep {
             dt,
             derivative: smoothing(self.derivative_cutoff, dt),
@@ -251,15 +285,20 @@ impl EuroTurn {
 mod tests {
     use super::*;
 
-    const FILTER: OneEuro =
-        OneEuro { min_cutoff: 1.0, beta: 0.01, derivative_cutoff: 1.0, least_cutoff: 0.0 };
+    const FILTER: OneEuro = OneEuro {
+        min_cutoff: 1.0,
+        beta: 0.01,
+        derivative_cutoff: 1.0,
+        least_cutoff: 0.0,
+        white_cutoff: 0.0,
+    };
 
     #[test]
     fn a_still_point_is_exactly_where_the_tracker_says() {
         let at = Vec3::new(0.31, 1.17, -0.42);
         let mut p = EuroPoint::new(at);
         for _ in 0..50 {
-            assert_eq!(p.advance(at, &FILTER.step(0.002, 0.001)), Vec3::ZERO);
+            assert_eq!(p.advance(at, &FILTER.step(0.002, 1.0, 0.001)), Vec3::ZERO);
         }
         assert!(p.at_rest());
     }
@@ -268,13 +307,13 @@ mod tests {
     fn a_clean_tracker_is_followed_exactly_and_a_noisy_one_smoothed() {
         let (dt, to) = (0.001, Vec3::new(0.0, 0.0, 0.0037));
         let mut clean = EuroPoint::new(Vec3::ZERO);
-        assert_eq!(clean.advance(to, &FILTER.step(0.0, dt)), Vec3::ZERO);
-        assert_eq!(clean.advance(to * 2.0, &FILTER.step(0.0, dt)), Vec3::ZERO);
+        assert_eq!(clean.advance(to, &FILTER.step(0.0, 1.0, dt)), Vec3::ZERO);
+        assert_eq!(clean.advance(to * 2.0, &FILTER.step(0.0, 1.0, dt)), Vec3::ZERO);
         // A 3.7 mm jump under 2 mm of jitter: at 1 ms, the still cutoff of
         // 0.5 Hz (plus the little the speed estimate adds) moves the point
         // 0.4 % of the way.
         let mut noisy = EuroPoint::new(Vec3::ZERO);
-        let lag = noisy.advance(to, &FILTER.step(0.002, dt));
+        let lag = noisy.advance(to, &FILTER.step(0.002, 1.0, dt));
         let moved = (to + lag).z / to.z;
         assert!(moved > 0.0035 && moved < 0.0042, "{moved}");
     }
@@ -286,13 +325,34 @@ mod tests {
         let floored = OneEuro { least_cutoff: 1.7, ..FILTER };
         let dt = 0.001;
         let cutoff = |f: &OneEuro, jitter: f32| {
-            let alpha = f.step(jitter, dt).alpha(0.0);
+            let alpha = f.step(jitter, 1.0, dt).alpha(0.0);
             alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
         };
         assert!((cutoff(&FILTER, 0.0026) - 0.385).abs() < 0.001, "{}", cutoff(&FILTER, 0.0026));
         assert!((cutoff(&floored, 0.0026) - 1.7).abs() < 1e-3, "{}", cutoff(&floored, 0.0026));
         assert!((cutoff(&floored, 0.0002) - 5.0).abs() < 1e-3, "{}", cutoff(&floored, 0.0002));
-        assert_eq!(floored.step(0.0, dt).alpha(0.0), 1.0);
+        assert_eq!(floored.step(0.0, 1.0, dt).alpha(0.0), 1.0);
+    }
+
+    #[test]
+    fn under_white_jitter_a_still_point_is_smoothed_no_slower_than_the_white_cutoff() {
+        // Under 1.9 mm of jitter the still cutoff would be 0.53 Hz and the
+        // least 1.3 Hz; jitter that is white lifts the floor to 7.1 Hz,
+        // 0.8 white to 0.8⁴ of it, 2.908 Hz; glitches leave the least.
+        let white = OneEuro { least_cutoff: 1.3, white_cutoff: 7.1, ..FILTER };
+        let dt = 0.001;
+        let cutoff = |whiteness: f32| {
+            let alpha = white.step(0.0019, whiteness, dt).alpha(0.0);
+            alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
+        };
+        assert!((cutoff(1.0) - 7.1).abs() < 2e-3, "{}", cutoff(1.0));
+        assert!((cutoff(0.8) - 2.908).abs() < 1e-3, "{}", cutoff(0.8));
+        assert!((cutoff(0.5) - 1.3).abs() < 1e-3, "{}", cutoff(0.5));
+        assert!((cutoff(0.0) - 1.3).abs() < 1e-3, "{}", cutoff(0.0));
+        // Under little jitter the still cutoff is above either floor.
+        let alpha = white.step(0.0001, 1.0, dt).alpha(0.0);
+        let still = alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt);
+        assert!((still - 10.0).abs() < 5e-3, "{still}");
     }
 
     #[test]
@@ -303,7 +363,7 @@ mod tests {
         let mut p = EuroPoint::new(Vec3::ZERO);
         let mut lag = Vec3::ZERO;
         for k in 1..=2000 {
-            lag = p.advance(Vec3::X * (v * k as f32 * dt), &FILTER.step(jitter, dt));
+            lag = p.advance(Vec3::X * (v * k as f32 * dt), &FILTER.step(jitter, 1.0, dt));
         }
         let f_c = (FILTER.min_cutoff * JITTER_UNIT + FILTER.beta * v) / jitter;
         let expected = v / (std::f32::consts::TAU * f_c);
@@ -315,7 +375,7 @@ mod tests {
     fn a_still_turn_is_exact_and_a_turn_under_jitter_lags() {
         let q = Quat::from_rotation_y(0.83);
         let mut t = EuroTurn::new(q);
-        let (noisy, clean) = (FILTER.step(0.002, 0.001), FILTER.step(0.0, 0.001));
+        let (noisy, clean) = (FILTER.step(0.002, 1.0, 0.001), FILTER.step(0.0, 1.0, 0.001));
         assert_eq!(t.advance(q, &noisy, 0.05), q);
         let to = Quat::from_rotation_y(0.9);
         let out = t.advance(to, &noisy, 0.05);
@@ -327,7 +387,7 @@ mod tests {
     #[test]
     fn a_speed_that_overflows_follows_exactly_and_stays_finite() {
         let mut p = EuroPoint::new(Vec3::ZERO);
-        let (far, tiny) = (Vec3::splat(9.5), FILTER.step(0.002, 1e-38));
+        let (far, tiny) = (Vec3::splat(9.5), FILTER.step(0.002, 1.0, 1e-38));
         assert_eq!(p.advance(far, &tiny), Vec3::ZERO);
         assert!(p.advance(-far, &tiny).is_finite());
         let mut t = EuroTurn::new(Quat::IDENTITY);
@@ -336,7 +396,8 @@ mod tests {
 
     #[test]
     fn settings_out_of_range_name_their_field() {
-        const NAMES: [&str; 4] = ["min_cutoff", "beta", "derivative_cutoff", "least_cutoff"];
+        const NAMES: [&str; 5] =
+            ["min_cutoff", "beta", "derivative_cutoff", "least_cutoff", "white_cutoff"];
         let bad = OneEuro { beta: -1.0, ..FILTER };
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "beta");
         let bad = OneEuro { min_cutoff: f32::NAN, ..FILTER };
@@ -347,6 +408,10 @@ mod tests {
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "least_cutoff");
         let bad = OneEuro { least_cutoff: f32::INFINITY, ..FILTER };
         assert_eq!(bad.validate(NAMES).unwrap_err().0, "least_cutoff");
+        let bad = OneEuro { white_cutoff: -0.1, ..FILTER };
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "white_cutoff");
+        let bad = OneEuro { white_cutoff: f32::NAN, ..FILTER };
+        assert_eq!(bad.validate(NAMES).unwrap_err().0, "white_cutoff");
         assert!(FILTER.validate(NAMES).is_ok());
     }
 }

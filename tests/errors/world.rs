@@ -69,6 +69,8 @@ fn every_config_field_is_checked_by_name_with_its_value() {
     names(derivative, &["config: tracking.shape.derivative_cutoff: ", "got 0"]);
     let least = filter(|f| f.shape.least_cutoff = -0.5);
     names(least, &["config: tracking.shape.least_cutoff: ", "finite and ≥ 0", "got -0.5"]);
+    let white = filter(|f| f.gross.white_cutoff = f32::NEG_INFINITY);
+    names(white, &["config: tracking.gross.white_cutoff: ", "finite and ≥ 0", "got -inf"]);
     let window = filter(|f| f.jitter_window = f32::NAN);
     names(window, &["config: tracking.jitter_window: ", "got NaN"]);
     names(filter(|f| f.jitter_window = 90.0), &["tracking.jitter_window: ", "(0, 60] s, got 90"]);

@@ -123,28 +123,40 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
 }
 
 #[test]
-fn under_white_jitter_the_grip_holds_and_lets_go_where_a_filter_without_a_least_cutoff_lags() {
+fn under_white_jitter_the_grip_holds_and_lets_go_where_filters_without_its_floors_lag() {
     // A tracker at 75 frames a second whose every joint is off by a fresh
     // 2.6 mm each frame: the jitter measured is about 2 mm, where the still
     // cutoff alone would be 0.5 Hz, a grip that follows 0.3 s behind.
     let noise = TrackingNoise::white(75.0).unwrap();
-    let mut unfloored = InteractionConfig::default();
-    unfloored.tracking.as_mut().unwrap().shape.least_cutoff = 0.0;
+    let shape = filtered().tracking.unwrap().shape;
+    let floored = |least_cutoff: f32, white_cutoff: f32| {
+        let mut config = filtered();
+        let filter = &mut config.tracking.as_mut().unwrap().shape;
+        (filter.least_cutoff, filter.white_cutoff) = (least_cutoff, white_cutoff);
+        config
+    };
     let clean = hold(filtered(), 0.0, 0).let_go.unwrap();
+    let late = |h: &Hold| h.let_go.map_or(f32::INFINITY, |t| t - clean);
     // The least cutoff's time constant bounds how long a still grip lags a
-    // hand that begins to open: 80 ms at 2 Hz.
-    let least = filtered().tracking.unwrap().shape.least_cutoff;
-    let bound = 1.0 / (std::f32::consts::TAU * least);
-    let mut late_unfloored = 0;
+    // hand that begins to open: 80 ms at 2 Hz. The white cutoff, for a
+    // tracker whose jitter is white, lets it go sooner still.
+    let bound = 1.0 / (std::f32::consts::TAU * shape.least_cutoff);
+    let (mut late_unfloored, mut sooner) = (0, Vec::new());
     for seed in 0..8 {
         let run = hold_under(&noise, filtered(), 2.6, 40 + seed);
-        let without = hold_under(&noise, unfloored, 2.6, 40 + seed);
-        let late = |h: &Hold| h.let_go.map_or(f32::INFINITY, |t| t - clean);
+        let least_only = hold_under(&noise, floored(shape.least_cutoff, 0.0), 2.6, 40 + seed);
+        let neither = hold_under(&noise, floored(0.0, 0.0), 2.6, 40 + seed);
         assert!(run.sagged < 0.003, "seed {seed}: sagged in the grip: {run:?}");
         assert!(late(&run) < bound, "seed {seed}: let go {:.3} s late: {run:?}", late(&run));
+        assert!(late(&least_only) < bound, "seed {seed}: {least_only:?}");
         assert!(run.off < 0.01, "seed {seed}: set down off its place: {run:?}");
-        late_unfloored += usize::from(late(&without) > bound);
+        assert!(late(&run) < late(&least_only), "seed {seed}: {run:?} against {least_only:?}");
+        sooner.push(late(&least_only) - late(&run));
+        late_unfloored += usize::from(late(&neither) > bound);
     }
+    sooner.sort_by(f32::total_cmp);
+    let median = sooner[sooner.len() / 2];
+    assert!(median > 0.01, "the white cutoff lets go only {median:.3} s sooner: {sooner:?}");
     assert!(late_unfloored >= 6, "without the least cutoff only {late_unfloored} of 8 let go late");
 }
 
