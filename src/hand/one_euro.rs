@@ -38,7 +38,7 @@ pub struct OneEuro {
     /// tracker whose every frame is off alike, without glitches, is
     /// smoothed no slower than this. It falls steeply as the jitter is
     /// less white ([`OneEuro::step`]), so a tracker whose error is its
-    /// rare glitches keeps [`OneEuro::least_cutoff`]. 0: none.
+    /// rare glitches is smoothed as without it. 0: none.
     #[serde(default)]
     pub white_cutoff: f32,
 }
@@ -74,11 +74,12 @@ impl OneEuro {
 
 /// How sharply [`OneEuro::white_cutoff`] is kept for white jitter: it is
 /// scaled by the whiteness to this power. A Leap Motion's jitter, mostly
-/// glitches, reads a whiteness of 0.2–0.66 on the hand's shape (15
-/// leapjs-playback recordings), white noise 0.98 at 100 frames a second
-/// and 0.78 at 30, where interpolated frames make it uneven: at the fourth
-/// power the Leap's keeps a fifth of the white cutoff at most, white
-/// noise 0.37–0.92 of it (the book's "Tracking noise").
+/// glitches, reads a whiteness of 0.2–0.66 on the hand's shape and
+/// 0.09–0.57 on its gross motion (15 leapjs-playback recordings), white
+/// noise 0.98 at 100 frames a second and 0.78 at 30, where interpolated
+/// frames make it uneven: at the fourth power the Leap's keeps a fifth of
+/// the white cutoff at most, white noise 0.37–0.92 of it (the book's
+/// "Tracking noise").
 pub const WHITENESS_POWER: i32 = 4;
 
 /// The jitter (m) under which a still point's cutoff is

@@ -129,10 +129,13 @@ fn under_white_jitter_the_grip_holds_and_lets_go_where_filters_without_its_floor
     // cutoff alone would be 0.5 Hz, a grip that follows 0.3 s behind.
     let noise = TrackingNoise::white(75.0).unwrap();
     let shape = filtered().tracking.unwrap().shape;
+    // Without the white cutoffs (the gross motion's too), and without any
+    // floor: the filter as it was before each.
     let floored = |least_cutoff: f32, white_cutoff: f32| {
         let mut config = filtered();
-        let filter = &mut config.tracking.as_mut().unwrap().shape;
-        (filter.least_cutoff, filter.white_cutoff) = (least_cutoff, white_cutoff);
+        let filter = config.tracking.as_mut().unwrap();
+        (filter.shape.least_cutoff, filter.shape.white_cutoff) = (least_cutoff, white_cutoff);
+        filter.gross.white_cutoff = white_cutoff;
         config
     };
     let clean = hold(filtered(), 0.0, 0).let_go.unwrap();
