@@ -51,13 +51,6 @@ fn white_median_ratio(n: usize) -> f32 {
     b * b * b
 }
 
-/// The fewest samples whose median and mean tell white jitter from
-/// glitches (1 s at [`SAMPLE_INTERVAL`], or the whole window if shorter):
-/// trackers that glitch do so 3–9 times a second (the book's census), so a
-/// second holds several, where a few samples hold none and any tracker
-/// would read white.
-pub const WHITENESS_SAMPLES: usize = 100;
-
 /// The quadratic Savitzky–Golay smoothing weight of the sample `i` places
 /// from the centre (Savitzky & Golay 1964): the parabola fitted by least
 /// squares through the span, read at its centre.
@@ -83,8 +76,9 @@ pub struct JitterMeter<const N: usize> {
     /// The history sorted, reused.
     scratch: Vec<f32>,
     jitter: f32,
-    /// [`Self::whiteness`], judged with the median.
-    whiteness: f32,
+    /// The history's mean (m²): above the median's square by as much as
+    /// the tracker glitches.
+    mean_square: f32,
 }
 
 impl<const N: usize> JitterMeter<N> {
@@ -100,7 +94,7 @@ impl<const N: usize> JitterMeter<N> {
             window,
             scratch: Vec::with_capacity(window),
             jitter: 0.0,
-            whiteness: 0.0,
+            mean_square: 0.0,
         }
     }
 
@@ -161,25 +155,23 @@ impl<const N: usize> JitterMeter<N> {
         self.scratch.extend_from_slice(&self.history);
         let middle = self.scratch.len() / 2;
         let (_, median, _) = self.scratch.select_nth_unstable_by(middle, f32::total_cmp);
-        let median = *median;
         self.jitter = median.sqrt();
-        let judged = self.history.len();
-        let mean = self.history.iter().sum::<f32>() / judged as f32;
-        self.whiteness = if judged >= WHITENESS_SAMPLES.min(self.window) && mean > 0.0 {
-            (median / mean / white_median_ratio(N)).min(1.0)
-        } else {
-            0.0
-        };
+        self.mean_square = self.history.iter().sum::<f32>() / self.history.len() as f32;
     }
 
     /// How white the jitter is, in [0, 1]: its median mean square over its
     /// mean, the share of its power that an ordinary sample has, over
     /// white noise's own share. About 1 for white noise, whose every
     /// sample is off alike; near 0 for a tracker whose error is its rare
-    /// glitches, whose power the median does not see. 0 until
-    /// [`WHITENESS_SAMPLES`] are judged.
+    /// glitches, whose power the median does not see. 0 until measured;
+    /// over the first few samples, any tracker reads about 1.
     pub fn whiteness(&self) -> f32 {
-        self.whiteness
+        let median = self.jitter * self.jitter;
+        if self.mean_square > 0.0 {
+            (median / self.mean_square / white_median_ratio(N)).min(1.0)
+        } else {
+            0.0
+        }
     }
 }
 
@@ -240,15 +232,12 @@ mod tests {
         let (loud, quiet) =
             (Normal::new(0.0f32, 0.0009).unwrap(), Normal::new(0.0f32, 0.0003).unwrap());
         let at = [Vec3::new(0.1, 0.25, -0.05), Vec3::new(0.13, 0.24, -0.04)];
+        assert_eq!(white.whiteness(), 0.0);
         for k in 0..2500 {
             let mut shake = |n: &Normal<f32>| Vec3::from_array([(); 3].map(|_| n.sample(&mut rng)));
             white.observe(&[at[0] + shake(&loud), at[1] + shake(&loud)], 0.001);
             let thrown = if (k / 10) % 40 == 5 { Vec3::Z * 0.006 } else { Vec3::ZERO };
             glitchy.observe(&[at[0] + thrown + shake(&quiet), at[1] + shake(&quiet)], 0.001);
-            if k == 1100 {
-                // 1.1 s in, 96 samples judged: too few to tell.
-                assert_eq!((white.whiteness(), glitchy.whiteness()), (0.0, 0.0));
-            }
         }
         assert!(white.whiteness() > 0.95, "{}", white.whiteness());
         assert!((0.3..0.7).contains(&glitchy.whiteness()), "{}", glitchy.whiteness());

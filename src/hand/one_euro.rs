@@ -76,10 +76,10 @@ impl OneEuro {
 /// scaled by the whiteness to this power. A Leap Motion's jitter, mostly
 /// glitches, reads a whiteness of 0.2–0.66 on the hand's shape and
 /// 0.09–0.57 on its gross motion (15 leapjs-playback recordings), white
-/// noise 0.98 at 100 frames a second and 0.78 at 30, where interpolated
-/// frames make it uneven: at the fourth power the Leap's keeps a fifth of
-/// the white cutoff at most, white noise 0.37–0.92 of it (the book's
-/// "Tracking noise").
+/// noise 0.98 at 100 frames a second and 0.78 at 30 (its interpolated
+/// frames, it seems, make it uneven): at the fourth power the Leap's
+/// keeps a fifth of the white cutoff at most, white noise 0.37–0.92 of it
+/// (the book's "Tracking noise").
 pub const WHITENESS_POWER: i32 = 4;
 
 /// The jitter (m) under which a still point's cutoff is
