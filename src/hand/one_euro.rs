@@ -319,16 +319,20 @@ mod tests {
         assert!(moved > 0.0035 && moved < 0.0042, "{moved}");
     }
 
+    /// The cutoff (Hz) a still point is smoothed at by `step`, of `dt` (s):
+    /// [`smoothing`] read backwards.
+    fn still_cutoff(step: EuroStep, dt: f32) -> f32 {
+        let alpha = step.alpha(0.0);
+        alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
+    }
+
     #[test]
     fn under_large_jitter_a_still_point_is_smoothed_no_slower_than_the_least_cutoff() {
         // Under 2.6 mm of jitter the still cutoff would be 0.38 Hz; the
         // least, 1.7 Hz, holds. Under 0.2 mm it is 5 Hz, above the least.
         let floored = OneEuro { least_cutoff: 1.7, ..FILTER };
         let dt = 0.001;
-        let cutoff = |f: &OneEuro, jitter: f32| {
-            let alpha = f.step(jitter, 1.0, dt).alpha(0.0);
-            alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
-        };
+        let cutoff = |f: &OneEuro, jitter: f32| still_cutoff(f.step(jitter, 1.0, dt), dt);
         assert!((cutoff(&FILTER, 0.0026) - 0.385).abs() < 0.001, "{}", cutoff(&FILTER, 0.0026));
         assert!((cutoff(&floored, 0.0026) - 1.7).abs() < 1e-3, "{}", cutoff(&floored, 0.0026));
         assert!((cutoff(&floored, 0.0002) - 5.0).abs() < 1e-3, "{}", cutoff(&floored, 0.0002));
@@ -342,17 +346,13 @@ mod tests {
         // 0.8 white to 0.8⁴ of it, 2.908 Hz; glitches leave the least.
         let white = OneEuro { least_cutoff: 1.3, white_cutoff: 7.1, ..FILTER };
         let dt = 0.001;
-        let cutoff = |whiteness: f32| {
-            let alpha = white.step(0.0019, whiteness, dt).alpha(0.0);
-            alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt)
-        };
+        let cutoff = |whiteness: f32| still_cutoff(white.step(0.0019, whiteness, dt), dt);
         assert!((cutoff(1.0) - 7.1).abs() < 2e-3, "{}", cutoff(1.0));
         assert!((cutoff(0.8) - 2.908).abs() < 1e-3, "{}", cutoff(0.8));
         assert!((cutoff(0.5) - 1.3).abs() < 1e-3, "{}", cutoff(0.5));
         assert!((cutoff(0.0) - 1.3).abs() < 1e-3, "{}", cutoff(0.0));
         // Under little jitter the still cutoff is above either floor.
-        let alpha = white.step(0.0001, 1.0, dt).alpha(0.0);
-        let still = alpha / (1.0 - alpha) / (std::f32::consts::TAU * dt);
+        let still = still_cutoff(white.step(0.0001, 1.0, dt), dt);
         assert!((still - 10.0).abs() < 5e-3, "{still}");
     }
 
