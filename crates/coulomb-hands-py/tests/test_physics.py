@@ -90,20 +90,24 @@ def tip_error(pose: ch.HandPose | None, still: dict[str, np.ndarray]) -> float:
 def test_a_pinch_holds_through_a_trackers_jitter_that_the_raw_tracked_hand_drops() -> None:
     still = pinch(CENTRE, SIDE / 2, 0.0025)
     fell = 0
-    for seed in (11, 12, 13):
+    for seed in range(11, 19):
         world, box, hand, tracked = jittered_pinch(ch.Config(), seed)
+        # Still pinched after 5 s. Its pads slip now and then under the jitter that is left,
+        # and the box wanders up or down in the pinch, as a random walk does: within ±22 mm
+        # over seeds 11-42 (the book's "Tracking noise"); it does not fall out.
         sank = CENTRE[1] - world.object_states()["position"][box, 1]
-        assert sank < 0.012, f"seed {seed}: the box sank {sank * 1000:.1f} mm"
-        assert len(world.contacts()["object"]) == 2
+        assert abs(sank) < 0.03, f"seed {seed}: the box moved {sank * 1000:.1f} mm down"
+        assert len(world.contacts()["object"]) == 2, f"seed {seed}: no longer pinched"
         # The jitter is measured on the hand, and the hand that acts leaves most of it out.
         jitter = world.hand_jitter(hand)
         assert jitter is not None and abs(jitter - 0.0017) < 0.00017, jitter
         acting = tip_error(world.hand_pose(hand), still)
         assert acting < tracked / 2, f"acting {acting * 1000:.2f} mm, tracked {tracked * 1000:.2f}"
-        # Given to the contacts as it is tracked, the same jitter shakes the box loose.
-        raw, box, hand, _ = jittered_pinch(ch.Config(tracking=None), seed)
-        assert raw.hand_jitter(hand) is None
-        fell += CENTRE[1] - raw.object_states()["position"][box, 1] > 0.1
+        if seed < 14:
+            # Given to the contacts as it is tracked, the same jitter shakes the box loose.
+            raw, box, hand, _ = jittered_pinch(ch.Config(tracking=None), seed)
+            assert raw.hand_jitter(hand) is None
+            fell += CENTRE[1] - raw.object_states()["position"][box, 1] > 0.1
     assert fell >= 2, f"the raw tracked hand dropped the box {fell} times of 3"
 
 
