@@ -4,9 +4,11 @@
 //! For each recording given (any format `replay` reads; the bundled Leap
 //! Motion recordings if none) and for white jitter at each `--white HZ`,
 //! the noise scaled to 3 mm rms (`--rms MM`) is laid on a still hand,
-//! drawn between its frames as a replay draws them, and metered as the
-//! hand that acts meters it: on its shape (the 21 joints less their mean)
-//! and on its gross position (that mean). It prints each one's whiteness,
+//! drawn between its frames as a replay draws them, and metered by the
+//! jitter meter the hand that acts has, on the hand's 21 joints: on its
+//! shape (the joints less their mean) and on its gross position (that
+//! mean). (The hand that acts meters 31 points of its capsules, and the
+//! mean of its palm's centre and knuckles.) It prints each one's whiteness,
 //! the mean over 8 noise streams of 20 s (after the first 3 s) and the
 //! largest stream's. The book's chapter on tracking noise quotes it.
 //!
@@ -26,7 +28,16 @@ const SETTLE: f64 = 3.0;
 /// The physics step the meters are fed at (s).
 const DT: f64 = 0.001;
 
-fn main() -> Result<(), RunError> {
+const USAGE: &str = "usage: whiteness [--rms MM] [--white HZ]... [FILE...]";
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("whiteness: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), RunError> {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let mut rms_mm = 3.0;
     let mut sources: Vec<(String, TrackingNoise)> = Vec::new();
@@ -36,15 +47,29 @@ fn main() -> Result<(), RunError> {
         let value = |args: &mut Vec<String>| -> f32 {
             let parsed = (!args.is_empty()).then(|| args.remove(0)).and_then(|v| v.parse().ok());
             parsed.unwrap_or_else(|| {
-                eprintln!("{arg} takes a number");
+                eprintln!("{arg} takes a number\n{USAGE}");
                 std::process::exit(2);
             })
         };
         match arg.as_str() {
-            "--rms" => rms_mm = value(&mut args),
+            "--help" | "-h" => {
+                println!("{USAGE}");
+                return Ok(());
+            }
+            "--rms" => {
+                rms_mm = value(&mut args);
+                if !(rms_mm.is_finite() && rms_mm > 0.0) {
+                    eprintln!("--rms takes a positive length in mm, got {rms_mm}\n{USAGE}");
+                    std::process::exit(2);
+                }
+            }
             "--white" => {
                 let hz = value(&mut args);
                 sources.push((format!("white, {hz} fps"), TrackingNoise::white(hz)?));
+            }
+            _ if arg.starts_with('-') => {
+                eprintln!("unknown option {arg}\n{USAGE}");
+                std::process::exit(2);
             }
             _ => files.push(arg),
         }

@@ -79,7 +79,8 @@ impl OneEuro {
 /// 0.58 on their most even streams), white noise 0.99 on the shape from 20
 /// to 100 frames a second (0.71–0.97 on the gross motion's one point): at
 /// the fourth power the Leap's keeps under a third of the white cutoff,
-/// white noise nearly all of it (the book's "Tracking noise",
+/// white noise nearly all of it on the shape and a quarter to nine tenths
+/// on the gross motion (the book's "Tracking noise", read on 21 joints by
 /// `examples/whiteness.rs`).
 pub const WHITENESS_POWER: i32 = 4;
 
