@@ -63,6 +63,15 @@ fn white_median_ratio(n: usize) -> f32 {
     b * b * b
 }
 
+/// The median of `values` (not empty; the upper one of an even count),
+/// found in `scratch`, reused.
+fn median(values: &[f32], scratch: &mut Vec<f32>) -> f32 {
+    scratch.clear();
+    scratch.extend_from_slice(values);
+    let middle = scratch.len() / 2;
+    *scratch.select_nth_unstable_by(middle, f32::total_cmp).1
+}
+
 /// The quadratic Savitzky–Golay smoothing weight of the sample `i` places
 /// from the centre (Savitzky & Golay 1964): the parabola fitted by least
 /// squares through the span, read at its centre.
@@ -171,11 +180,7 @@ impl<const N: usize> JitterMeter<N> {
             self.history[self.written % self.window] = variance;
         }
         self.written += 1;
-        self.scratch.clear();
-        self.scratch.extend_from_slice(&self.history);
-        let middle = self.scratch.len() / 2;
-        let (_, median, _) = self.scratch.select_nth_unstable_by(middle, f32::total_cmp);
-        self.jitter = median.sqrt();
+        self.jitter = median(&self.history, &mut self.scratch).sqrt();
         self.filling += variance;
         if self.written.is_multiple_of(POOL) {
             self.pool();
@@ -193,11 +198,7 @@ impl<const N: usize> JitterMeter<N> {
             self.pools[self.pooled % length] = pool;
         }
         self.pooled += 1;
-        self.scratch.clear();
-        self.scratch.extend_from_slice(&self.pools);
-        let middle = self.scratch.len() / 2;
-        let (_, median, _) = self.scratch.select_nth_unstable_by(middle, f32::total_cmp);
-        let median = *median;
+        let median = median(&self.pools, &mut self.scratch);
         let mean = self.pools.iter().sum::<f32>() / self.pools.len() as f32;
         self.whiteness =
             if mean > 0.0 { (median / mean / white_median_ratio(N * POOL)).min(1.0) } else { 0.0 };

@@ -3,6 +3,7 @@
 //! and its object rests until a hand reaches it.
 
 use super::*;
+use coulomb_hands::eval::glitch::quantile;
 use coulomb_hands::input::capture::{self, Capture};
 use coulomb_hands::run::capture::{CaptureOptions, replay_capture};
 use coulomb_hands::run::demo::GraspLiftCarry;
@@ -294,11 +295,8 @@ fn a_real_hand_lifts_a_real_dish_by_its_rim_when_it_touches_the_dishs_own_surfac
         exact_lifts.push(exact.simulated_lift_mm);
         parts_lifts.push(parts.simulated_lift_mm);
     }
-    let median = |lifts: &mut Vec<f32>| {
-        lifts.sort_by(f32::total_cmp);
-        (lifts[2] + lifts[3]) / 2.0
-    };
-    let (exact, parts) = (median(&mut exact_lifts), median(&mut parts_lifts));
+    let median = |lifts: &[f32]| quantile(lifts.iter().map(|&mm| f64::from(mm)), 0.5);
+    let (exact, parts) = (median(&exact_lifts), median(&parts_lifts));
     assert!(
         exact > parts,
         "the exact surface lifts it {exact} mm, the convex parts {parts} mm (medians over mass): \
