@@ -54,9 +54,9 @@ impl ReplayArgs {
     pub fn run(self) -> Outcome {
         use coulomb_hands::run::replay::{is_session_file, place_at_grasp, replay_recording};
         if !is_session_file(&self.file)
-            && coulomb_hands::input::capture::is_capture_file(&self.file)
+            && let Some(capture) = coulomb_hands::input::capture::load_if_capture(&self.file)
         {
-            return self.run_capture();
+            return self.run_capture(capture?);
         }
         if self.mass.is_some() || self.material.is_some() || self.hand_surface.is_some() {
             return Err("--mass, --material and --hand-surface are for a hand–object capture; \
@@ -119,14 +119,13 @@ impl ReplayArgs {
 impl ReplayArgs {
     /// `replay` on a hand–object capture: one replay for every mass and
     /// material asked for, each measured against the capture.
-    fn run_capture(self) -> Outcome {
+    fn run_capture(self, capture: coulomb_hands::input::capture::Capture) -> Outcome {
         use coulomb_hands::run::capture::{CaptureGrid, replay_grid};
         if self.trace.trace.is_some() || self.soak.is_some() || self.session.record.is_some() {
             return Err("a capture replays once, without --trace, --loop or --record".into());
         }
         let mut grid = CaptureGrid::new(self.method.method, self.gamma, self.mass, self.material)?;
         grid.hand_surface = self.hand_surface.unwrap_or(grid.hand_surface);
-        let capture = coulomb_hands::input::capture::load(&self.file)?;
         let report = replay_grid(&capture, &grid)?;
         self.output.print(&report, print_capture)?;
         Ok(())

@@ -291,7 +291,7 @@ impl Anchor {
         };
         let line = match (motion.now(), settings.line_band) {
             (BoneShape::Capsule(cap), Some(band)) => {
-                line::along_face(&cap, object, c, n, band, pad, patch.samples)
+                line::along_face(&cap, object, c, n, band, line::Pad::of(bone, pad), patch.samples)
             }
             _ => None,
         };

@@ -13,11 +13,23 @@
 //! it keeps the pad's width where the face is flat there too. A curved
 //! face (a ball, a pen across the bone) falls away from a straight bone
 //! within a pad's width, so it keeps the pad's ring.
+//!
+//! A fingertip is the exception ([`Pad::of`]). Its pulp is a rounded pad at
+//! the end of the finger: pressed against a flat face, the pressure under
+//! it is a paraboloid over a patch a few millimetres across (Pawluk & Howe
+//! 1999, "Dynamic contact of the human fingerpad against a flat surface",
+//! J. Biomech. Eng. 121:605), not even along the 2–3 cm of the distal
+//! bone's capsule. So a distal bone's line reaches only a pad's radius
+//! from its middle: its patch is the pad's ring, laid flat. It still holds
+//! an object upright as a flat support does, but a fingertip pinch twists
+//! free at a fingertip's torsional friction, μ·N times the ring's mean
+//! arm (8/9 of the pad's radius), where a line along the whole bone held
+//! twice that.
 
 use super::ObjectView;
 use super::patch::PLANAR_COS;
 use super::surface;
-use crate::hand::Capsule;
+use crate::hand::{Bone, Capsule, Phalanx};
 use glam::Vec3;
 
 /// The part of a bone that lies along a face, on the face's tangent plane
@@ -35,6 +47,28 @@ pub(crate) struct Line {
     pub across: f32,
 }
 
+/// A bone's pad as a line sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Pad {
+    /// The pad's radius (m): its ring's, and a line's half-width.
+    pub radius: f32,
+    /// How far (m) a line may reach from its middle along the bone.
+    pub reach: f32,
+}
+
+impl Pad {
+    /// The pad of `bone`, of radius `radius` (m): a fingertip's line
+    /// reaches a pad's radius from its middle (its rounded pulp), the
+    /// others' the whole bone (their pads lie flat along the phalanx).
+    pub(crate) fn of(bone: Bone, radius: f32) -> Pad {
+        let reach = match bone {
+            Bone::Finger(_, Phalanx::Distal) => radius,
+            _ => f32::INFINITY,
+        };
+        Pad { radius, reach }
+    }
+}
+
 /// How many halvings fit each end of the line to its face: to 1/64 of
 /// its reach from C.
 const FIT_STEPS: usize = 6;
@@ -44,8 +78,10 @@ const FIT_STEPS: usize = 6;
 /// of C's tangent plane at both ends, and as parallel to the plane as the
 /// face must be flat (2.6°), so that its depth is the same along it. The
 /// line is its axis projected onto that plane, each end drawn in until the
-/// face under it is as flat as at C. `None` when the bone presses with one
-/// end, or when the line is shorter than `2·pad` (m), the width of the
+/// face under it is as flat as at C, then to the pad's reach from its
+/// middle ([`Pad::of`]). `None` when the bone presses with one
+/// end, or when the line is shorter than the pad's width (two of its
+/// radii), the width of the
 /// bone's pad (the face curves away under it): its patch is then the pad's
 /// ring.
 pub(crate) fn along_face(
@@ -54,9 +90,10 @@ pub(crate) fn along_face(
     c: Vec3,
     n: Vec3,
     band: f32,
-    pad: f32,
+    pad: Pad,
     samples: usize,
 ) -> Option<Line> {
+    let Pad { radius: pad, reach } = pad;
     // The bone's surface above the plane at each end of its axis: both
     // within the band, and level, or the bone is not lying along the face
     // but pressing it with one end (a fingertip, however flat its pad).
@@ -98,6 +135,8 @@ pub(crate) fn along_face(
     if half.is_nan() || half < pad {
         return None;
     }
+    // Only the pad's own reach touches: a fingertip's pulp, not its bone.
+    let half = half.min(reach);
     // The pad's width across it, where every sample of the ellipse lies on
     // the flat face; else none (a face narrower than the pad: a knife edge).
     let mut line = Line { middle: 0.5 * (from + to), along, half, across: pad };
@@ -157,6 +196,9 @@ mod tests {
         }
     }
 
+    /// A 4 mm pad whose line may reach the whole bone.
+    const PAD: Pad = Pad { radius: 0.004, reach: f32::INFINITY };
+
     /// A bone of radius 7 mm whose axis runs from `a` to `b`.
     fn bone(a: Vec3, b: Vec3) -> Capsule {
         Capsule { a, b, radius: 0.007 }
@@ -169,11 +211,30 @@ mod tests {
         let y = 0.03 + 0.007 + 0.001;
         let laid = bone(Vec3::new(-0.017, y, 0.004), Vec3::new(0.014, y, 0.004));
         let c = Vec3::new(0.0, 0.03, 0.004);
-        let line = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9).unwrap();
+        let line = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, PAD, 9).unwrap();
         assert!((line.half - 0.0155).abs() < 1e-5, "{line:?}");
         assert!((line.middle - Vec3::new(-0.0015, 0.03, 0.004)).length() < 1e-5);
         assert!((line.along - Vec3::X).length() < 1e-5);
         assert_eq!(line.across, 0.004);
+    }
+
+    #[test]
+    fn a_fingertip_laid_along_a_face_touches_it_with_its_pulp_alone() {
+        // A 2.8 cm distal bone on a 6 cm box's top face: its line is the
+        // pad's 5 mm either side of the middle of the part that lies on the
+        // face; any other finger bone's reaches its ends.
+        let cube = Cuboid::new(Vec3::splat(0.03));
+        let y = 0.03 + 0.007 + 0.0005;
+        let laid = bone(Vec3::new(-0.02, y, -0.006), Vec3::new(0.008, y, -0.006));
+        let c = Vec3::new(0.0, 0.03, -0.006);
+        let index = |p| Bone::Finger(crate::hand::Finger::Index, p);
+        let pulp = Pad::of(index(Phalanx::Distal), 0.005);
+        let tip = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, pulp, 9).unwrap();
+        let whole = Pad::of(index(Phalanx::Intermediate), 0.005);
+        let bone_line = along_face(&laid, &view(&cube), c, Vec3::Y, 0.004, whole, 9).unwrap();
+        assert_eq!(tip.half, 0.005, "{tip:?}");
+        assert!((bone_line.half - 0.014).abs() < 1e-6, "{bone_line:?}");
+        assert_eq!((tip.middle, tip.along, tip.across), (bone_line.middle, bone_line.along, 0.005));
     }
 
     #[test]
@@ -183,25 +244,25 @@ mod tests {
         // From 1 cm inside the face's edge to 2 cm beyond it.
         let over = bone(Vec3::new(0.01, y, 0.0), Vec3::new(0.04, y, 0.0));
         let c = Vec3::new(0.015, 0.02, 0.0);
-        let line = along_face(&over, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9).unwrap();
+        let line = along_face(&over, &view(&cube), c, Vec3::Y, 0.004, PAD, 9).unwrap();
         let end = line.middle.x + line.half;
         assert!(end <= 0.02 && end > 0.0195, "{line:?}");
         // A fingertip pressing at 20°: only its end is within the band.
         let steep = bone(Vec3::new(-0.02, y + 0.0073, 0.0), Vec3::new(0.0, y, 0.0));
         let c = Vec3::new(0.0, 0.02, 0.0);
-        assert_eq!(along_face(&steep, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9), None);
+        assert_eq!(along_face(&steep, &view(&cube), c, Vec3::Y, 0.004, PAD, 9), None);
         // At 4°, within the band from end to end, but its depth would differ
         // by 1.4 mm along it: not lying along the face. At 2° it does.
         for (deg, lies) in [(4.0f32, false), (2.0, true)] {
             let rise = 0.02 * deg.to_radians().tan();
             let tilted = bone(Vec3::new(-0.02, y + rise, 0.0), Vec3::new(0.0, y, 0.0));
-            let line = along_face(&tilted, &view(&cube), c, Vec3::Y, 0.004, 0.004, 9);
+            let line = along_face(&tilted, &view(&cube), c, Vec3::Y, 0.004, PAD, 9);
             assert_eq!(line.is_some(), lies, "{deg}°: {line:?}");
         }
         // A face 6 mm wide: a line along it, but no pad's width across it.
         let strip = Cuboid::new(Vec3::new(0.02, 0.02, 0.003));
         let line =
-            along_face(&over, &view(&strip), Vec3::new(0.015, 0.02, 0.0), Vec3::Y, 0.004, 0.004, 9);
+            along_face(&over, &view(&strip), Vec3::new(0.015, 0.02, 0.0), Vec3::Y, 0.004, PAD, 9);
         assert_eq!(line.map(|l| l.across), Some(0.0));
     }
 
@@ -214,7 +275,7 @@ mod tests {
         let y = 0.03 + 0.007;
         let laid = bone(Vec3::new(-0.015, y, 0.0), Vec3::new(0.015, y, 0.0));
         let c = Vec3::new(0.0, 0.03, 0.0);
-        assert_eq!(along_face(&laid, &view(&ball), c, Vec3::Y, 0.004, 0.004, 9), None);
+        assert_eq!(along_face(&laid, &view(&ball), c, Vec3::Y, 0.004, PAD, 9), None);
     }
 
     #[test]

@@ -67,9 +67,10 @@ fn a_still_finger_only_takes_energy_out_of_a_box_spinning_under_it() {
                 "{case}: kinetic energy rose from {kicked:.3e} J to {most:.3e} J"
             );
             if spin == 4.0 {
-                // The finger lies along the face, so its patch is a line
-                // along the bone (`contact/line.rs`), whose end samples
-                // hold 6–7° here: turning well past that means they slipped.
+                // The fingertip lies along the face, so its patch is its
+                // pulp's ring laid flat (`contact/line.rs`), whose samples
+                // hold 13–17° here: turning well past that means they
+                // slipped.
                 assert!(
                     turned > 1.5 * holds,
                     "{case}: the box only turned {turned:.1}° of the {holds:.1}° its patch holds"

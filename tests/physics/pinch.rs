@@ -24,6 +24,16 @@ fn pinch(config: InteractionConfig, depth: f32) -> Pinch {
 }
 
 fn pinch_with(config: InteractionConfig, depth: f32, material: Material) -> Pinch {
+    pinch_between(config, depth, material, [INDEX_DISTAL; 2])
+}
+
+/// [`pinch_with`] between `bones`, the left hand's and the right's.
+fn pinch_between(
+    config: InteractionConfig,
+    depth: f32,
+    material: Material,
+    bones: [Bone; 2],
+) -> Pinch {
     let mut world = InteractionWorld::new(config).unwrap();
     let desc = ObjectDesc::cuboid("box", Vec3::splat(2.0 * HALF), MASS, Vec3::new(0.0, 0.5, 0.0))
         .with_material(material);
@@ -35,7 +45,7 @@ fn pinch_with(config: InteractionConfig, depth: f32, material: Material) -> Pinc
         let x = s * (HALF + RADIUS - depth);
         let capsule =
             Capsule { a: Vec3::new(x, 0.5, -0.012), b: Vec3::new(x, 0.5, 0.012), radius: RADIUS };
-        set_bone(&mut poses[i], INDEX_DISTAL, capsule);
+        set_bone(&mut poses[i], bones[i], capsule);
         hands[i] = world.add_hand(side);
     }
     Pinch { world, box_id, hands, poses }
@@ -210,19 +220,19 @@ impl Observer for Twister {
     }
 }
 
-/// The pinch twisted about its axis (x) with no gravity, its patches of
-/// `samples`, as pads' rings or as lines along the bones: the angle it
+/// The pinch by `bone` twisted about its axis (x) with no gravity, its
+/// patches of `samples`, with or without line contacts: the angle it
 /// turned (degrees), and the patches' twist stiffness about x (N·m/rad),
 /// each sample a spring of γ/N at its distance from the axis through its
 /// patch's centre.
-fn twist(samples: usize, line_contacts: bool) -> (f32, f32) {
+fn twist(samples: usize, line_contacts: bool, bone: Bone) -> (f32, f32) {
     let config = InteractionConfig {
         gravity: Vec3::ZERO,
         patch: PatchConfig { samples, ..PatchConfig::default() },
         line_contacts,
         ..InteractionConfig::default()
     };
-    let mut p = pinch(config, 0.003);
+    let mut p = pinch_between(config, 0.003, test_material(0.5), [bone; 2]);
     let dt = p.world.config().dt;
     // The turned angle, accumulated so full turns count.
     let mut twister = Twister { object: p.box_id, turned: 0.0 };
@@ -243,27 +253,97 @@ fn twist(samples: usize, line_contacts: bool) -> (f32, f32) {
 
 #[test]
 fn nine_samples_resist_twisting_that_one_sample_does_not() {
-    let (one, _) = twist(1, true);
+    let (one, _) = twist(1, true, INDEX_DISTAL);
     // The torque is below the patches' torsional friction (for the rings,
     // 2 · μ_st · f_n · ρ · 8/9 ≈ 0.0043 N·m), so the box settles at the
     // elastic angle τ/k of the patches' springs: the pads' rings of 4 mm,
-    // or the lines along the 2.4 cm bones that lie along the faces, about
-    // 4 times as stiff.
+    // also where the fingertips lie along the faces (their pulp touches,
+    // not their bone), or the lines along the 2.4 cm middle phalanges that
+    // lie along the faces, about 4 times as stiff.
+    let middle = Bone::Finger(Finger::Index, Phalanx::Intermediate);
     let mut stiffnesses = Vec::new();
-    for line_contacts in [false, true] {
-        let (nine, stiffness) = twist(9, line_contacts);
+    for (line_contacts, bone) in [(false, INDEX_DISTAL), (true, INDEX_DISTAL), (true, middle)] {
+        let (nine, stiffness) = twist(9, line_contacts, bone);
         let elastic = (0.002 / stiffness).to_degrees();
         assert!(
             (nine - elastic).abs() < 0.25 * elastic,
-            "9 samples, lines {line_contacts}: turned {nine:.1}°, elastic angle {elastic:.1}°"
+            "9 samples, lines {line_contacts}, {bone}: turned {nine:.1}°, elastic angle {elastic:.1}°"
         );
         stiffnesses.push(stiffness);
     }
     let rho = PatchConfig::default().finger_radius;
     let ring = 2.0 * 8.0 * (400.0 / 9.0) * rho * rho;
-    assert!((stiffnesses[0] - ring).abs() < 0.05 * ring, "{stiffnesses:?} vs a ring's {ring}");
-    assert!(stiffnesses[1] > 3.0 * ring, "the lines' {stiffnesses:?} vs a ring's {ring}");
+    for pad in &stiffnesses[..2] {
+        assert!((pad - ring).abs() < 0.05 * ring, "{stiffnesses:?} vs a ring's {ring}");
+    }
+    assert!(stiffnesses[2] > 3.0 * ring, "the lines' {stiffnesses:?} vs a ring's {ring}");
     assert!(one > 45.0, "1 sample: turned only {one:.1}°");
+}
+
+/// Twists the box about x with a torque that grows by `rate` N·m/s, and
+/// notes the torque and the pinch's squeeze ΣN when it spins free.
+struct Ramp {
+    object: ObjectId,
+    rate: f32,
+    torque: f32,
+    /// The torque (N·m) and ΣN (N) when the box first turned at 1 rad/s.
+    free: Option<(f32, f32)>,
+}
+
+impl Observer for Ramp {
+    fn after_hand_forces(&mut self, world: &mut InteractionWorld) -> Result<(), RunError> {
+        self.torque += self.rate * world.config().dt;
+        let body = world.object_body(self.object).unwrap();
+        world.physics_mut().bodies[body].add_torque(Vec3::new(self.torque, 0.0, 0.0), true);
+        Ok(())
+    }
+
+    fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
+        let spin = step.world.object_state(self.object).unwrap().angvel.x;
+        if self.free.is_none() && spin > 1.0 {
+            let squeeze = step.world.contacts().iter().map(|c| c.normal_force).sum();
+            self.free = Some((self.torque, squeeze));
+        }
+        Ok(())
+    }
+}
+
+/// The torsional capacity τ/(μ_st·ΣN) (m) of a pinch between `bones`
+/// sunk 2.5 mm into the box, with no gravity: the torque about the pinch's
+/// axis, growing slowly, at which the box spins free.
+fn torsional_capacity(line_contacts: bool, bones: [Bone; 2]) -> f32 {
+    let config =
+        InteractionConfig { gravity: Vec3::ZERO, line_contacts, ..InteractionConfig::default() };
+    let skin = Material::custom("grippy", 0.7, 0.55, 0.5);
+    let mut p = pinch_between(config, 0.0025, skin, bones);
+    let dt = p.world.config().dt;
+    let mut ramp = Ramp { object: p.box_id, rate: 0.0015, torque: 0.0, free: None };
+    p.drive((12.0 / dt) as usize, &mut [&mut ramp]);
+    let (torque, squeeze) = ramp.free.expect("the box spun free");
+    torque / (0.7 * squeeze)
+}
+
+#[test]
+fn a_fingertip_pinch_twists_free_at_a_fingertips_torsional_friction() {
+    // A fingertip's contact patch of radius a, 4–7 mm, holds a twist of
+    // μ·N·(2/3)·a. Laid along the faces, the fingertips touch with their
+    // pulp, so a pinch holds what the pads' rings hold (8/9 of the pad's
+    // radius, thumb 6 mm, fingers 4), where lines along the whole distal
+    // bones held twice that. The middle phalanges, whose pads lie flat
+    // along them, still touch along their length, the control.
+    let thumb = Bone::Finger(Finger::Thumb, Phalanx::Distal);
+    for bones in [[INDEX_DISTAL; 2], [INDEX_DISTAL, thumb]] {
+        let (tip, ring) = (torsional_capacity(true, bones), torsional_capacity(false, bones));
+        assert!(
+            (2.0 / 3.0 * 0.004..=2.0 / 3.0 * 0.007).contains(&tip),
+            "{bones:?}: τ/(μ_st ΣN) = {:.2} mm",
+            tip * 1e3
+        );
+        assert!((tip - ring).abs() < 0.1 * ring, "{bones:?}: {tip} vs the rings' {ring}");
+    }
+    let middle = Bone::Finger(Finger::Index, Phalanx::Intermediate);
+    let lines = torsional_capacity(true, [middle; 2]);
+    assert!(lines > 1.5 * 2.0 / 3.0 * 0.007, "middle phalanges: {:.2} mm", lines * 1e3);
 }
 
 #[test]

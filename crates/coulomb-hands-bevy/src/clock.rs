@@ -31,6 +31,12 @@ impl HandClock {
     pub fn overstep(&self) -> Duration {
         self.overstep
     }
+
+    /// How many steps of `dt` the next run of the physics takes when it
+    /// receives `delta` more: the whole `dt`s in the overstep and `delta`.
+    pub(crate) fn steps_in(&self, delta: Duration, dt: Duration) -> u128 {
+        (self.overstep + delta).as_nanos().checked_div(dt.as_nanos()).unwrap_or(0)
+    }
 }
 
 /// Runs [`HandPhysicsStep`] once for each whole world `dt` of time
@@ -44,12 +50,13 @@ pub(crate) fn run_steps(world: &mut World) {
         return;
     }
     let outer = *world.resource::<Time>();
-    world.resource_mut::<Time<HandClock>>().context_mut().overstep += outer.delta();
+    let mut clock = world.resource_mut::<Time<HandClock>>();
+    let steps = clock.context().steps_in(outer.delta(), dt);
+    clock.context_mut().overstep += outer.delta();
     let _ = world.try_schedule_scope(HandPhysicsStep, |world, schedule| {
-        loop {
+        for _ in 0..steps {
             let mut clock = world.resource_mut::<Time<HandClock>>();
-            let Some(rest) = clock.context().overstep.checked_sub(dt) else { break };
-            clock.context_mut().overstep = rest;
+            clock.context_mut().overstep -= dt;
             clock.advance_by(dt);
             let generic = clock.as_generic();
             *world.resource_mut::<Time>() = generic;

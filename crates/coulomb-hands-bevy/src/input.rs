@@ -132,8 +132,8 @@ pub(crate) fn attach(
 type NewInput = Or<(Changed<HandInput>, Added<AppHandLink>)>;
 
 /// Hands each app hand's newest input to its world's source, due at the
-/// last of the steps this frame runs ([`crate::clock::run_steps`] counts
-/// them the same way).
+/// last of the steps this frame runs ([`HandClock::steps_in`], as
+/// [`crate::clock::run_steps`] counts them).
 pub(crate) fn push_inputs(
     hands: Query<(&HandInput, &AppHandLink), NewInput>,
     physics: Option<Res<HandPhysics>>,
@@ -142,8 +142,7 @@ pub(crate) fn push_inputs(
 ) {
     let Some(physics) = physics else { return };
     let dt = physics.timestep();
-    let ahead = clock.context().overstep() + time.delta();
-    let steps = ahead.as_nanos().checked_div(dt.as_nanos()).unwrap_or(0);
+    let steps = clock.context().steps_in(time.delta(), dt);
     let last = steps.saturating_sub(1) as f64 * dt.as_secs_f64();
     let due = physics.world().time() + last;
     for (input, link) in &hands {

@@ -152,16 +152,16 @@ impl Source {
         // A scenario may have a `hand` and an `object` as a capture has:
         // its `hands` decide first, as the core's replay never takes one.
         let file = Path::new(input).exists() && !is_scenario(input);
-        let capture = file && capture::is_capture_file(Path::new(input));
-        let recording = file && !capture && is_recording(input);
+        let capture = file.then(|| capture::load_if_capture(Path::new(input))).flatten();
+        let recording = file && capture.is_none() && is_recording(input);
         if !recording && options.for_recording() {
             return Err(format!("{input}: {RECORDING_ONLY}").into());
         }
         if !file {
             return Ok(Source::Scenario(Box::new(Scenario::find(input)?)));
         }
-        if capture {
-            return Source::capture(Path::new(input));
+        if let Some(capture) = capture {
+            return Source::capture(capture?, Path::new(input));
         }
         if recording {
             let recording = coulomb_hands::input::recording::load(Path::new(input))?;
@@ -190,8 +190,7 @@ impl Source {
 
     /// The capture at `path`, read by the core's loader (a bad capture is
     /// its error, naming the file, frame and field).
-    fn capture(path: &Path) -> Result<Source, LoadError> {
-        let capture = capture::load(path)?;
+    fn capture(capture: Capture, path: &Path) -> Result<Source, LoadError> {
         let playback = Box::new(capture.playback()?);
         let (name, credit) = (capture.source_name.clone(), credit(path));
         Ok(Source::Capture { name, capture: Arc::new(capture), playback, credit })

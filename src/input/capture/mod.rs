@@ -108,15 +108,23 @@ struct RawObject {
     poses: Vec<Vec<f64>>,
 }
 
-/// Whether `path` looks like a capture: a `.json` file whose text has a
-/// `"frame_rate_hz"`, a `"hand"` and an `"object"` (a Leap recording has
-/// none of them; a scenario or a session no frame rate).
-pub fn is_capture_file(path: &Path) -> bool {
+/// The capture at `path`, read once, if it looks like one: a `.json` file
+/// whose text has a `"frame_rate_hz"`, a `"hand"` and an `"object"` (a
+/// Leap recording has none of them; a scenario or a session no frame
+/// rate). `None` for any other file, or one that cannot be read, for its
+/// own loader to report.
+pub fn load_if_capture(path: &Path) -> Option<Result<Capture, InputError>> {
     let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    json && std::fs::read(path).is_ok_and(|bytes| {
-        let has = |key: &[u8]| bytes.windows(key.len()).any(|w| w == key);
-        has(b"\"frame_rate_hz\"") && has(b"\"object\"") && has(b"\"hand\"")
-    })
+    let bytes = std::fs::read(path).ok().filter(|_| json)?;
+    let has = |key: &[u8]| bytes.windows(key.len()).any(|w| w == key);
+    if !(has(b"\"frame_rate_hz\"") && has(b"\"object\"") && has(b"\"hand\"")) {
+        return None;
+    }
+    let name = path.display().to_string();
+    Some(super::text_of(&name, bytes).and_then(|text| {
+        let files = crate::files::FileSystem;
+        parse(&name, &text, &|file: &str| mesh_beside(path, file, &files))
+    }))
 }
 
 /// Reads a capture file and its mesh (beside it).
@@ -128,10 +136,17 @@ pub fn load(path: &Path) -> Result<Capture, InputError> {
 /// and a scene's meshes are.
 pub fn load_from(path: &Path, files: &dyn crate::files::Files) -> Result<Capture, InputError> {
     let (name, text) = super::read_text(path, files)?;
+    parse(&name, &text, &|file: &str| mesh_beside(path, file, files))
+}
+
+/// The mesh `file` that the capture at `path` names, read from beside it.
+fn mesh_beside(
+    path: &Path,
+    file: &str,
+    files: &dyn crate::files::Files,
+) -> Result<TriangleMesh, String> {
     let dir = path.parent().unwrap_or(Path::new("."));
-    let mesh =
-        |file: &str| TriangleMesh::load_from(&dir.join(file), files).map_err(|e| e.to_string());
-    parse(&name, &text, &mesh)
+    TriangleMesh::load_from(&dir.join(file), files).map_err(|e| e.to_string())
 }
 
 /// Parses a capture's text; `mesh` reads the mesh file it names.
