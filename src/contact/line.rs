@@ -15,16 +15,18 @@
 //! within a pad's width, so it keeps the pad's ring.
 //!
 //! A fingertip is the exception ([`Pad::of`]). Its pulp is a rounded pad at
-//! the end of the finger: pressed against a flat face, the pressure under
-//! it is a paraboloid over a patch a few millimetres across (Pawluk & Howe
-//! 1999, "Dynamic contact of the human fingerpad against a flat surface",
-//! J. Biomech. Eng. 121:605), not even along the 2–3 cm of the distal
-//! bone's capsule. So a distal bone's line reaches only a pad's radius
-//! from its middle: its patch is the pad's ring, laid flat. It still holds
-//! an object upright as a flat support does, but a fingertip pinch twists
-//! free at a fingertip's torsional friction, μ·N times the ring's mean
-//! arm (8/9 of the pad's radius), where a line along the whole bone held
-//! twice that.
+//! the end of the finger: pressed against a flat face, it presses hardest
+//! in the middle of a patch a few millimetres across (an inverted
+//! paraboloid: Pawluk & Howe 1999, "Dynamic contact of the human fingerpad
+//! against a flat surface", J. Biomech. Eng. 121:605), not evenly along
+//! the 2–3 cm of the distal bone's capsule. So a distal bone's line
+//! reaches only a pad's radius from its middle: its patch is the pad's
+//! ring, laid flat. It still holds an object upright as a flat support
+//! does, but a fingertip pinch twists free at a fingertip's torsional
+//! friction, μ·N times the ring's mean arm (8/9 of the pad's radius with
+//! the default 9 samples), where a line along the whole bone held twice
+//! that. The ring sits at the middle of the part of the bone on the face,
+//! not at the bone's tip: the capsule does not say where its pulp is.
 
 use super::ObjectView;
 use super::patch::PLANAR_COS;

@@ -126,8 +126,9 @@ pub struct InteractionConfig {
     /// (default); off, C moves from where it is, as in the thesis.
     pub slip_recentre: bool,
     /// A finger bone lying along a flat face touches it along a line
-    /// (default): its patch is stretched along the bone and holds the
-    /// object upright as a small flat support does (`contact/line.rs`).
+    /// (default): its patch is stretched along the bone (a fingertip's only
+    /// to its pad's radius: its pulp touches) and holds the object upright
+    /// as a small flat support does (`contact/line.rs`).
     /// Off, every finger patch is the pad's ring, as in the thesis.
     pub line_contacts: bool,
     /// A contact on a curved object follows the two surfaces as they roll

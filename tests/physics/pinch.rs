@@ -267,7 +267,7 @@ fn nine_samples_resist_twisting_that_one_sample_does_not() {
         let elastic = (0.002 / stiffness).to_degrees();
         assert!(
             (nine - elastic).abs() < 0.25 * elastic,
-            "9 samples, lines {line_contacts}, {bone}: turned {nine:.1}°, elastic angle {elastic:.1}°"
+            "9 samples, lines {line_contacts}, {bone}: turned {nine:.1}°, elastic {elastic:.1}°"
         );
         stiffnesses.push(stiffness);
     }
@@ -286,7 +286,11 @@ struct Ramp {
     object: ObjectId,
     rate: f32,
     torque: f32,
-    /// The torque (N·m) and ΣN (N) when the box first turned at 1 rad/s.
+    /// The torque (N·m) and ΣN (N) since the box turns at over 1 rad/s, and
+    /// for how long (s).
+    spinning: Option<(f32, f32, f32)>,
+    /// Those when it had kept turning so for 50 ms: a pad's brief slip,
+    /// after which the pinch sticks again, is not yet free.
     free: Option<(f32, f32)>,
 }
 
@@ -300,9 +304,23 @@ impl Observer for Ramp {
 
     fn after_step(&mut self, step: &StepView) -> Result<(), RunError> {
         let spin = step.world.object_state(self.object).unwrap().angvel.x;
-        if self.free.is_none() && spin > 1.0 {
-            let squeeze = step.world.contacts().iter().map(|c| c.normal_force).sum();
-            self.free = Some((self.torque, squeeze));
+        if self.free.is_some() {
+            return Ok(());
+        }
+        self.spinning = match (spin > 1.0, self.spinning) {
+            (false, _) => None,
+            (true, Some((torque, squeeze, time))) => {
+                Some((torque, squeeze, time + step.world.config().dt))
+            }
+            (true, None) => {
+                let squeeze = step.world.contacts().iter().map(|c| c.normal_force).sum();
+                Some((self.torque, squeeze, 0.0))
+            }
+        };
+        if let Some((torque, squeeze, time)) = self.spinning
+            && time >= 0.05
+        {
+            self.free = Some((torque, squeeze));
         }
         Ok(())
     }
@@ -311,13 +329,12 @@ impl Observer for Ramp {
 /// The torsional capacity τ/(μ_st·ΣN) (m) of a pinch between `bones`
 /// sunk 2.5 mm into the box, with no gravity: the torque about the pinch's
 /// axis, growing slowly, at which the box spins free.
-fn torsional_capacity(line_contacts: bool, bones: [Bone; 2]) -> f32 {
-    let config =
-        InteractionConfig { gravity: Vec3::ZERO, line_contacts, ..InteractionConfig::default() };
+fn torsional_capacity(bones: [Bone; 2]) -> f32 {
+    let config = InteractionConfig { gravity: Vec3::ZERO, ..InteractionConfig::default() };
     let skin = Material::custom("grippy", 0.7, 0.55, 0.5);
     let mut p = pinch_between(config, 0.0025, skin, bones);
     let dt = p.world.config().dt;
-    let mut ramp = Ramp { object: p.box_id, rate: 0.0015, torque: 0.0, free: None };
+    let mut ramp = Ramp { object: p.box_id, rate: 0.0015, torque: 0.0, spinning: None, free: None };
     p.drive((12.0 / dt) as usize, &mut [&mut ramp]);
     let (torque, squeeze) = ramp.free.expect("the box spun free");
     torque / (0.7 * squeeze)
@@ -327,13 +344,19 @@ fn torsional_capacity(line_contacts: bool, bones: [Bone; 2]) -> f32 {
 fn a_fingertip_pinch_twists_free_at_a_fingertips_torsional_friction() {
     // A fingertip's contact patch of radius a, 4–7 mm, holds a twist of
     // μ·N·(2/3)·a. Laid along the faces, the fingertips touch with their
-    // pulp, so a pinch holds what the pads' rings hold (8/9 of the pad's
-    // radius, thumb 6 mm, fingers 4), where lines along the whole distal
+    // pulp, so a pinch holds what the pads' rings hold, 8/9 of their mean
+    // radius (thumb 6 mm, fingers 4), where lines along the whole distal
     // bones held twice that. The middle phalanges, whose pads lie flat
     // along them, still touch along their length, the control.
+    let patch = PatchConfig::default();
     let thumb = Bone::Finger(Finger::Thumb, Phalanx::Distal);
-    for bones in [[INDEX_DISTAL; 2], [INDEX_DISTAL, thumb]] {
-        let (tip, ring) = (torsional_capacity(true, bones), torsional_capacity(false, bones));
+    let pairs = [
+        ([INDEX_DISTAL; 2], patch.finger_radius),
+        ([INDEX_DISTAL, thumb], 0.5 * (patch.finger_radius + patch.thumb_radius)),
+    ];
+    for (bones, radius) in pairs {
+        let tip = torsional_capacity(bones);
+        let ring = 8.0 / 9.0 * radius;
         assert!(
             (2.0 / 3.0 * 0.004..=2.0 / 3.0 * 0.007).contains(&tip),
             "{bones:?}: τ/(μ_st ΣN) = {:.2} mm",
@@ -342,7 +365,7 @@ fn a_fingertip_pinch_twists_free_at_a_fingertips_torsional_friction() {
         assert!((tip - ring).abs() < 0.1 * ring, "{bones:?}: {tip} vs the rings' {ring}");
     }
     let middle = Bone::Finger(Finger::Index, Phalanx::Intermediate);
-    let lines = torsional_capacity(true, [middle; 2]);
+    let lines = torsional_capacity([middle; 2]);
     assert!(lines > 1.5 * 2.0 / 3.0 * 0.007, "middle phalanges: {:.2} mm", lines * 1e3);
 }
 

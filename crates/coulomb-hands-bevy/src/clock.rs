@@ -56,7 +56,9 @@ pub(crate) fn run_steps(world: &mut World) {
     let _ = world.try_schedule_scope(HandPhysicsStep, |world, schedule| {
         for _ in 0..steps {
             let mut clock = world.resource_mut::<Time<HandClock>>();
-            clock.context_mut().overstep -= dt;
+            // A step's system may have set the clock back: stop, never wrap.
+            let Some(rest) = clock.context().overstep.checked_sub(dt) else { break };
+            clock.context_mut().overstep = rest;
             clock.advance_by(dt);
             let generic = clock.as_generic();
             *world.resource_mut::<Time>() = generic;

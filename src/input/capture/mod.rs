@@ -114,8 +114,10 @@ struct RawObject {
 /// rate). `None` for any other file, or one that cannot be read, for its
 /// own loader to report.
 pub fn load_if_capture(path: &Path) -> Option<Result<Capture, InputError>> {
-    let json = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let bytes = std::fs::read(path).ok().filter(|_| json)?;
+    if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
+        return None;
+    }
+    let bytes = std::fs::read(path).ok()?;
     let has = |key: &[u8]| bytes.windows(key.len()).any(|w| w == key);
     if !(has(b"\"frame_rate_hz\"") && has(b"\"object\"") && has(b"\"hand\"")) {
         return None;
