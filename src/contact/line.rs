@@ -81,11 +81,9 @@ const FIT_STEPS: usize = 6;
 /// face must be flat (2.6°), so that its depth is the same along it. The
 /// line is its axis projected onto that plane, each end drawn in until the
 /// face under it is as flat as at C, then to the pad's reach from its
-/// middle ([`Pad::of`]). `None` when the bone presses with one
-/// end, or when the line is shorter than the pad's width (two of its
-/// radii), the width of the
-/// bone's pad (the face curves away under it): its patch is then the pad's
-/// ring.
+/// middle ([`Pad::of`]). `None` when the bone presses with one end, or
+/// when the line is shorter than the pad is wide, two of its radii (the
+/// face curves away under it): its patch is then the pad's ring.
 pub(crate) fn along_face(
     bone: &Capsule,
     object: &ObjectView,

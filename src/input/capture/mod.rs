@@ -123,10 +123,8 @@ pub fn load_if_capture(path: &Path) -> Option<Result<Capture, InputError>> {
         return None;
     }
     let name = path.display().to_string();
-    Some(super::text_of(&name, bytes).and_then(|text| {
-        let files = crate::files::FileSystem;
-        parse(&name, &text, &|file: &str| mesh_beside(path, file, &files))
-    }))
+    let text = super::text_of(&name, bytes);
+    Some(text.and_then(|text| parse_at(path, &name, &text, &crate::files::FileSystem)))
 }
 
 /// Reads a capture file and its mesh (beside it).
@@ -138,17 +136,21 @@ pub fn load(path: &Path) -> Result<Capture, InputError> {
 /// and a scene's meshes are.
 pub fn load_from(path: &Path, files: &dyn crate::files::Files) -> Result<Capture, InputError> {
     let (name, text) = super::read_text(path, files)?;
-    parse(&name, &text, &|file: &str| mesh_beside(path, file, files))
+    parse_at(path, &name, &text, files)
 }
 
-/// The mesh `file` that the capture at `path` names, read from beside it.
-fn mesh_beside(
+/// [`parse`] of the text of the capture at `path`, its mesh read from
+/// beside it through `files`.
+fn parse_at(
     path: &Path,
-    file: &str,
+    name: &str,
+    text: &str,
     files: &dyn crate::files::Files,
-) -> Result<TriangleMesh, String> {
+) -> Result<Capture, InputError> {
     let dir = path.parent().unwrap_or(Path::new("."));
-    TriangleMesh::load_from(&dir.join(file), files).map_err(|e| e.to_string())
+    let mesh =
+        |file: &str| TriangleMesh::load_from(&dir.join(file), files).map_err(|e| e.to_string());
+    parse(name, text, &mesh)
 }
 
 /// Parses a capture's text; `mesh` reads the mesh file it names.
