@@ -131,8 +131,10 @@ fn hold(
         let r = stream.residual(t);
         let shaken = match part {
             Part::All => r,
-            Part::Rigid => Residual { joints: [r.joints[0]; 21], turn: r.turn },
-            Part::Shape => Residual { joints: r.joints.map(|j| j - r.joints[0]), turn: Vec3::ZERO },
+            Part::Rigid => Residual { joints: [r.joints[0]; 21], stretch: None, ..r },
+            Part::Shape => {
+                Residual { joints: r.joints.map(|j| j - r.joints[0]), turn: Vec3::ZERO, ..r }
+            }
         };
         Some(shaken.apply(&pose))
     });

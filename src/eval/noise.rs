@@ -25,9 +25,13 @@ use crate::hand::HandPose;
 use crate::input::playback::DEFAULT_GRACE;
 use crate::input::recording::{self, Recording};
 use crate::run::RunError;
-use glam::{Quat, Vec3};
+use glam::Vec3;
 use rand::Rng;
 use std::path::Path;
+
+mod residual;
+pub use residual::{MAX_STRETCH, Residual};
+use residual::{joints, residual};
 
 /// The Gaussian smoothing's σ (s): see the module doc.
 pub const SMOOTHING: f64 = 0.03;
@@ -65,71 +69,6 @@ const BUNDLED: [(&str, &str); 4] = [
     ("data/leap/pinch-57fps.json.lz", include_str!("../../data/leap/pinch-57fps.json.lz")),
     ("data/leap/three-claps.json.lz", include_str!("../../data/leap/three-claps.json.lz")),
 ];
-
-/// One frame's noise: each joint's offset from its smoothed track (m),
-/// and the palm's turn from its smoothed turn (a rotation vector, rad),
-/// both in the smoothed palm's frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Residual {
-    /// Per joint, in the order of [`JOINTS`].
-    pub joints: [Vec3; JOINTS],
-    /// The palm's turn.
-    pub turn: Vec3,
-}
-
-impl Default for Residual {
-    /// No noise.
-    fn default() -> Self {
-        Residual::ZERO
-    }
-}
-
-impl Residual {
-    const ZERO: Residual = Residual { joints: [Vec3::ZERO; JOINTS], turn: Vec3::ZERO };
-
-    fn lerp(&self, other: &Residual, w: f32) -> Residual {
-        Residual {
-            joints: std::array::from_fn(|j| self.joints[j].lerp(other.joints[j], w)),
-            turn: self.turn.lerp(other.turn, w),
-        }
-    }
-
-    /// This noise, `scale` times as strong.
-    pub fn scaled(&self, scale: f32) -> Residual {
-        Residual { joints: self.joints.map(|j| j * scale), turn: self.turn * scale }
-    }
-
-    /// `pose` with this noise: each joint moved by its residual turned
-    /// into the pose's palm frame, the palm turned by its residual turn;
-    /// the capsules run through the moved joints.
-    pub fn apply(&self, pose: &HandPose) -> HandPose {
-        let frame = pose.palm.rotation;
-        let shift = |j: usize| frame * self.joints[j];
-        let mut out = pose.clone();
-        out.palm.center += shift(0);
-        out.palm.rotation = (frame * Quat::from_scaled_axis(self.turn)).normalize();
-        for (f, finger) in out.fingers.iter_mut().enumerate() {
-            let joint = |k: usize| 1 + 4 * f + k;
-            for (p, bone) in finger.iter_mut().enumerate() {
-                bone.a += shift(joint(p));
-                bone.b += shift(joint(p + 1));
-            }
-        }
-        out
-    }
-}
-
-/// The joints of a pose, in the order of [`JOINTS`] (world, m).
-fn joints(pose: &HandPose) -> [Vec3; JOINTS] {
-    let mut out = [pose.palm.center; JOINTS];
-    for (f, finger) in pose.fingers.iter().enumerate() {
-        out[1 + 4 * f] = finger[0].a;
-        for p in 0..3 {
-            out[2 + 4 * f + p] = finger[p].b;
-        }
-    }
-    out
-}
 
 /// The residuals of one recorded hand, frame by frame.
 #[derive(Debug, Clone)]
@@ -278,6 +217,7 @@ impl TrackingNoise {
                     .map(|_| Residual {
                         joints: std::array::from_fn(|_| gauss(WHITE_RMS)),
                         turn: gauss(WHITE_RMS / WHITE_LEVER),
+                        stretch: None,
                     })
                     .collect(),
             })
@@ -364,29 +304,6 @@ fn residual_track(times: &[f64], poses: &[&HandPose]) -> ResidualTrack {
         }
     }
     track
-}
-
-/// Frame `k`'s residual from the Gaussian-weighted mean of the frames
-/// within 3σ of it, in that mean's palm frame.
-fn residual(times: &[f64], poses: &[&HandPose], points: &[[Vec3; JOINTS]], k: usize) -> Residual {
-    let t = times[k];
-    let (mut weight, mut mean, mut turn) =
-        (0.0f32, [Vec3::ZERO; JOINTS], Quat::from_xyzw(0.0, 0.0, 0.0, 0.0));
-    let here = poses[k].palm.rotation;
-    let window =
-        times.partition_point(|&s| s < t - WINDOW)..times.partition_point(|&s| s <= t + WINDOW);
-    for m in window {
-        let w = (-0.5 * ((times[m] - t) / SMOOTHING).powi(2)).exp() as f32;
-        weight += w;
-        for j in 0..JOINTS {
-            mean[j] += w * points[m][j];
-        }
-        let q = poses[m].palm.rotation;
-        turn += q * (w * q.dot(here).signum());
-    }
-    let frame = turn.normalize().inverse();
-    let joints = std::array::from_fn(|j| frame * (points[k][j] - mean[j] / weight));
-    Residual { joints, turn: (frame * here).to_scaled_axis() }
 }
 
 /// The runs of frames between dropouts, as index ranges into `times`,
@@ -507,6 +424,7 @@ mod tests {
     #[test]
     fn a_clean_hand_entering_leaving_and_lost_in_a_sweep_has_no_noise() {
         use crate::hand::{Side, rig::HandRig};
+        use glam::Quat;
         let rig = HandRig::adult(Side::Right);
         let (rate, speed) = (90.0, 1.2);
         let times: Vec<f64> =

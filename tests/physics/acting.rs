@@ -112,12 +112,14 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
     assert!(clean.sagged < 0.001 && clean.off < 0.001, "clean: {clean:?}");
     let through_filter = runs().iter().filter(|(acting, _)| acting.sagged > 0.02).count();
     let as_tracked = runs().iter().filter(|(_, tracked)| tracked.sagged > 0.02).count();
-    // A third of the raw holds drop (5 of 16 since the noise's track edges
-    // were cut out, 2026-12-06; the book's "Tracking noise"); through the
-    // filter, the rare drop follows a glitch.
-    assert!(through_filter <= 2, "{through_filter} of {STREAMS} dropped through the filter");
+    // Raw, 2 of 16 holds drop, none through the filter (the book's "Tracking
+    // noise"). It was 5 of 16 raw while the noise stretched bones (before
+    // 2026-12-08), and 3 of 16 at 2.6 and 3 mm now: what is left is the
+    // glitches, which a hand that turns a finger through the cube drops
+    // for, and which the filter takes the edge off.
+    assert!(through_filter <= 1, "{through_filter} of {STREAMS} dropped through the filter");
     assert!(
-        as_tracked >= 4 && as_tracked >= through_filter + 3,
+        as_tracked >= through_filter + 2,
         "the raw tracked hand dropped {as_tracked} of {STREAMS}, the filtered {through_filter}"
     );
 }
