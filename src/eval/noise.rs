@@ -5,9 +5,11 @@
 //! rigid shake of the whole hand would not do. So the noise is taken from
 //! real recordings: each joint's position less its smoothed track, in the
 //! palm's frame (and the palm's turn less its smoothed turn), frame by
-//! frame. A synthetic user's tracked hand replays those residuals, joint
-//! by joint, from a stretch of one recorded hand, scaled; and loses
-//! tracking as often, and for as long, as the recordings' hands did.
+//! frame. A synthetic user's tracked hand replays those residuals from a
+//! stretch of one recorded hand, scaled, each finger laid from its knuckle
+//! so that a scaled residual turns a bone as a tracker's skeleton does,
+//! rather than stretching it ([`Residual::apply`]); and loses tracking as
+//! often, and for as long, as the recordings' hands did.
 //!
 //! The smoothing is a Gaussian of σ = 30 ms, a cut-off near 5 Hz: voluntary
 //! hand motion lies below it (Brooks 1990, "Telerobotic response

@@ -112,11 +112,9 @@ fn under_2_mm_of_real_jitter_the_grip_holds_its_cube_and_the_raw_tracked_hand_dr
     assert!(clean.sagged < 0.001 && clean.off < 0.001, "clean: {clean:?}");
     let through_filter = runs().iter().filter(|(acting, _)| acting.sagged > 0.02).count();
     let as_tracked = runs().iter().filter(|(_, tracked)| tracked.sagged > 0.02).count();
-    // Raw, 2 of 16 holds drop, none through the filter (the book's "Tracking
-    // noise"). It was 5 of 16 raw while the noise stretched bones (before
-    // 2026-12-08), and 3 of 16 at 2.6 and 3 mm now: what is left is the
-    // glitches, which a hand that turns a finger through the cube drops
-    // for, and which the filter takes the edge off.
+    // Raw, 2 of 16 holds drop; through the filter none (the book's
+    // "Tracking noise"). It was 5 of 16 raw while the scaled noise
+    // stretched the bones (before 2026-12-08).
     assert!(through_filter <= 1, "{through_filter} of {STREAMS} dropped through the filter");
     assert!(
         as_tracked >= through_filter + 2,

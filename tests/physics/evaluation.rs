@@ -215,7 +215,7 @@ fn the_grip_holds_the_cube_where_it_closed_on_it_and_one_gamma_per_contact_does_
 }
 
 #[test]
-fn real_tracking_noise_moves_each_joint_on_its_own() {
+fn real_tracking_noise_moves_each_finger_on_its_own() {
     use rand::SeedableRng;
     let noise = TrackingNoise::bundled().unwrap();
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(4);

@@ -4,15 +4,14 @@ use super::{JOINTS, SMOOTHING, WINDOW};
 use crate::hand::HandPose;
 use glam::{Quat, Vec3};
 
-/// The most a scaled residual lengthens a bone, or shortens it by: a
-/// bone a tracker made twice as long as its neighbouring frames' is a
-/// misfit of its own, which scaled further would reach across the hand (or
-/// shrink to nothing, which the world refuses as a bone).
+/// The most times longer, or shorter, a scaled residual lays a bone than
+/// the pose has it: a tracker's stretch scaled past that would reach
+/// across the hand, or shrink a bone to nothing, which the world refuses.
 pub const MAX_STRETCH: f32 = 2.0;
 
 /// One frame's noise: each joint's offset from its smoothed track (m),
-/// and the palm's turn from its smoothed turn (a rotation vector, rad),
-/// both in the smoothed palm's frame.
+/// the palm's turn from its smoothed turn (a rotation vector, rad), both
+/// in the smoothed palm's frame, and each finger bone's stretch.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Residual {
     /// Per joint, in the order of [`JOINTS`].
@@ -21,8 +20,9 @@ pub struct Residual {
     pub turn: Vec3,
     /// Per finger (thumb first) and capsule (proximal first), how much
     /// longer the tracker made the bone than its mean length over the
-    /// smoothing's neighbouring frames, as the log of their ratio (0 for
-    /// a Leap's skeleton); `None` for a tracker whose joints are each off
+    /// smoothing's neighbouring frames, as the log of their ratio (at most
+    /// 0.014 in a Leap's recordings here; 0 where a recorded bone has no
+    /// length); `None` for a tracker whose joints are each off
     /// on their own (white jitter), whose bones change length as its
     /// joints' offsets make them ([`Self::apply`]).
     pub stretch: Option<[[f32; 3]; 5]>,
@@ -64,15 +64,15 @@ impl Residual {
     /// `pose` with this noise: the palm's centre moved by its residual
     /// turned into the pose's palm frame, the palm turned by its residual
     /// turn, and each finger laid from its first joint, moved by that
-    /// joint's residual, capsule by capsule: each turned as its joints'
-    /// residuals turn it, and as much longer or shorter as the tracker made
-    /// it ([`Self::stretch`]).
+    /// joint's residual, capsule by capsule: each pointed along the chord
+    /// its joints' residuals give it, and as much longer or shorter than
+    /// the pose has it as the tracker made it ([`Self::stretch`]).
     ///
     /// A recorded tracker's residual turns a bone, and a Leap's (any
     /// skeleton fitted to the hand) keeps its length. Scaled as offsets of
     /// its joints, a turn's chord would stretch the bone: a fingertip thrown
-    /// 13 mm across its 25 mm bone, scaled 3.7 times to the study's 2 mm,
-    /// would make it 54 mm long. Without a stretch (white jitter), each
+    /// 13 mm across its 25 mm bone, scaled 3.7 times (a Leap's fist
+    /// recording at 2 mm rms), would make it 54 mm long. Without a stretch (white jitter), each
     /// joint is moved by its residual, as a tracker of independent joints
     /// moves it. A stretch is laid at most [`MAX_STRETCH`] times longer or
     /// shorter.
@@ -84,18 +84,23 @@ impl Residual {
         out.palm.rotation = (frame * Quat::from_scaled_axis(self.turn)).normalize();
         for (f, finger) in out.fingers.iter_mut().enumerate() {
             let joint = |k: usize| 1 + 4 * f + k;
+            let Some(stretch) = self.stretch else {
+                for (p, capsule) in finger.iter_mut().enumerate() {
+                    capsule.a += shift(joint(p));
+                    capsule.b += shift(joint(p + 1));
+                }
+                continue;
+            };
+            let ln_max = MAX_STRETCH.ln();
             // How far the joint before the capsule was moved.
             let mut moved = shift(joint(0));
             for (p, capsule) in finger.iter_mut().enumerate() {
                 let vector = capsule.b - capsule.a;
                 let turned = vector + shift(joint(p + 1)) - shift(joint(p));
-                let laid = match (self.stretch, turned.try_normalize()) {
-                    (Some(stretch), Some(along)) => {
-                        let ln_max = MAX_STRETCH.ln();
-                        along * vector.length() * stretch[f][p].clamp(-ln_max, ln_max).exp()
-                    }
-                    _ => turned,
-                };
+                let ratio = stretch[f][p].clamp(-ln_max, ln_max).exp();
+                // A chord of no direction leaves the capsule's own.
+                let along = turned.try_normalize().unwrap_or(vector.normalize_or_zero());
+                let laid = along * vector.length() * ratio;
                 capsule.a += moved;
                 let end = capsule.a + laid;
                 moved = end - capsule.b;
@@ -123,7 +128,8 @@ pub(super) fn joints(pose: &HandPose) -> [Vec3; JOINTS] {
 }
 
 /// Frame `k`'s residual from the Gaussian-weighted mean of the frames
-/// within 3σ of it, in that mean's palm frame.
+/// within 3σ of it, in that mean's palm frame; each bone's stretch from
+/// the same weighted mean of its lengths.
 pub(super) fn residual(
     times: &[f64],
     poses: &[&HandPose],
@@ -208,6 +214,10 @@ mod tests {
         }
         let frame = pose.palm.rotation;
         let distal = index(&pose)[2];
+        // Pointed along the scaled residuals' chord.
+        let chord = distal.b - distal.a + frame * (glitch.joints[tip] - glitch.joints[tip - 1]);
+        let laid = index(&shaken)[2].b - index(&shaken)[2].a;
+        assert!(laid.normalize().dot(chord.normalize()) > 0.999_99, "{laid} against {chord}");
         let offsets = (distal.b + frame * glitch.joints[tip])
             .distance(distal.a + frame * glitch.joints[tip - 1]);
         let length = distal.a.distance(distal.b);
@@ -240,10 +250,36 @@ mod tests {
         let most = Residual { stretch: Some(stretch), ..Residual::ZERO }.scaled(4.0).apply(&pose);
         let ratio = length(&most, 3, 1) / length(&pose, 3, 1);
         assert!((ratio - MAX_STRETCH).abs() < 1e-5, "{ratio}");
+        stretch[3][1] = -(1.5f32.ln());
+        let least = Residual { stretch: Some(stretch), ..Residual::ZERO }.scaled(4.0).apply(&pose);
+        let ratio = length(&least, 3, 1) / length(&pose, 3, 1);
+        assert!((ratio - 1.0 / MAX_STRETCH).abs() < 1e-5, "{ratio}");
         let mut joints = [Vec3::ZERO; JOINTS];
         joints[1 + 4 * 2 + 3] = Vec3::new(0.0, 0.013, 0.0);
         let white = Residual { joints, ..Residual::ZERO }.scaled(3.7).apply(&pose);
         let tip = pose.fingers[2][2].b + pose.palm.rotation * Vec3::new(0.0, 0.0481, 0.0);
         assert!(white.fingers[2][2].b.distance(tip) < 1e-6);
+    }
+
+    /// A tracker that draws one frame's index fingertip 20 % further from
+    /// its last joint (a landmark tracker's misfit) gives that bone a
+    /// stretch, and no other bone any.
+    #[test]
+    fn a_trackers_stretched_bone_is_measured_as_its_stretch() {
+        use crate::hand::{Side, rig::HandRig};
+        let rig = HandRig::adult(Side::Right);
+        let times: Vec<f64> = (0..60).map(|k| k as f64 / 100.0).collect();
+        let mut poses: Vec<HandPose> =
+            times.iter().map(|_| rig.pose(Vec3::ZERO, Quat::IDENTITY, [0.3; 5])).collect();
+        let distal = &mut poses[30].fingers[1][2];
+        distal.b = distal.a + (distal.b - distal.a) * 1.2;
+        let points: Vec<[Vec3; JOINTS]> = poses.iter().map(joints).collect();
+        let stretch =
+            residual(&times, &poses.iter().collect::<Vec<_>>(), &points, 30).stretch.unwrap();
+        // Against the weighted mean of its lengths, which the frame itself
+        // lengthens a little: ln 1.2 less that.
+        assert!(stretch[1][2] > 0.1 && stretch[1][2] < 1.2f32.ln(), "{}", stretch[1][2]);
+        let others = stretch.iter().flatten().filter(|s| s.abs() > 1e-6).count();
+        assert_eq!(others, 1, "{stretch:?}");
     }
 }
