@@ -2,7 +2,7 @@
 
 use super::{JOINTS, SMOOTHING, WINDOW};
 use crate::hand::HandPose;
-use glam::{Quat, Vec3};
+use glam::{FloatExt, Quat, Vec3};
 
 /// The most times longer, or shorter, a scaled residual lays a bone than
 /// the pose has it: a tracker's stretch scaled past that would reach
@@ -44,9 +44,9 @@ impl Residual {
             joints: std::array::from_fn(|j| self.joints[j].lerp(other.joints[j], w)),
             turn: self.turn.lerp(other.turn, w),
             stretch: match (self.stretch, other.stretch) {
-                (Some(a), Some(b)) => Some(std::array::from_fn(|f| {
-                    std::array::from_fn(|p| lerp(a[f][p], b[f][p], w))
-                })),
+                (Some(a), Some(b)) => {
+                    Some(std::array::from_fn(|f| std::array::from_fn(|p| a[f][p].lerp(b[f][p], w))))
+                }
                 _ => None,
             },
         }
@@ -72,10 +72,10 @@ impl Residual {
     /// skeleton fitted to the hand) keeps its length. Scaled as offsets of
     /// its joints, a turn's chord would stretch the bone: a fingertip thrown
     /// 13 mm across its 25 mm bone, scaled 3.7 times (a Leap's fist
-    /// recording at 2 mm rms), would make it 54 mm long. Without a stretch (white jitter), each
-    /// joint is moved by its residual, as a tracker of independent joints
-    /// moves it. A stretch is laid at most [`MAX_STRETCH`] times longer or
-    /// shorter.
+    /// recording at 2 mm rms), would make it 54 mm long. Without a stretch
+    /// (white jitter), each joint is moved by its residual, as a tracker of
+    /// independent joints moves it. A stretch is laid at most
+    /// [`MAX_STRETCH`] times longer or shorter.
     pub fn apply(&self, pose: &HandPose) -> HandPose {
         let frame = pose.palm.rotation;
         let shift = |j: usize| frame * self.joints[j];
@@ -83,20 +83,19 @@ impl Residual {
         out.palm.center += shift(0);
         out.palm.rotation = (frame * Quat::from_scaled_axis(self.turn)).normalize();
         for (f, finger) in out.fingers.iter_mut().enumerate() {
-            let joint = |k: usize| 1 + 4 * f + k;
             let Some(stretch) = self.stretch else {
                 for (p, capsule) in finger.iter_mut().enumerate() {
-                    capsule.a += shift(joint(p));
-                    capsule.b += shift(joint(p + 1));
+                    capsule.a += shift(joint(f, p));
+                    capsule.b += shift(joint(f, p + 1));
                 }
                 continue;
             };
             let ln_max = MAX_STRETCH.ln();
             // How far the joint before the capsule was moved.
-            let mut moved = shift(joint(0));
+            let mut moved = shift(joint(f, 0));
             for (p, capsule) in finger.iter_mut().enumerate() {
                 let vector = capsule.b - capsule.a;
-                let turned = vector + shift(joint(p + 1)) - shift(joint(p));
+                let turned = vector + shift(joint(f, p + 1)) - shift(joint(f, p));
                 let ratio = stretch[f][p].clamp(-ln_max, ln_max).exp();
                 // A chord of no direction leaves the capsule's own.
                 let along = turned.try_normalize().unwrap_or(vector.normalize_or_zero());
@@ -111,17 +110,19 @@ impl Residual {
     }
 }
 
-fn lerp(a: f32, b: f32, w: f32) -> f32 {
-    a + (b - a) * w
+/// Of [`JOINTS`], finger `f`'s joint `k` (0 its knuckle, 3 its tip);
+/// 0 is the palm's centre.
+fn joint(f: usize, k: usize) -> usize {
+    1 + 4 * f + k
 }
 
 /// The joints of a pose, in the order of [`JOINTS`] (world, m).
 pub(super) fn joints(pose: &HandPose) -> [Vec3; JOINTS] {
     let mut out = [pose.palm.center; JOINTS];
     for (f, finger) in pose.fingers.iter().enumerate() {
-        out[1 + 4 * f] = finger[0].a;
+        out[joint(f, 0)] = finger[0].a;
         for p in 0..3 {
-            out[2 + 4 * f + p] = finger[p].b;
+            out[joint(f, p + 1)] = finger[p].b;
         }
     }
     out
@@ -170,7 +171,7 @@ pub(super) fn residual(
 
 /// Finger `f`'s capsule `p`'s length in a pose's [`JOINTS`] (m).
 fn bone_length(joints: &[Vec3; JOINTS], f: usize, p: usize) -> f32 {
-    joints[1 + 4 * f + p].distance(joints[2 + 4 * f + p])
+    joints[joint(f, p)].distance(joints[joint(f, p + 1)])
 }
 
 #[cfg(test)]
@@ -196,7 +197,7 @@ mod tests {
             })
             .collect();
         let track = residual_track(&times, &poses.iter().collect::<Vec<_>>());
-        let tip = 1 + 4 + 3;
+        let tip = joint(1, 3);
         let glitch = track
             .residuals
             .iter()
@@ -255,7 +256,7 @@ mod tests {
         let ratio = length(&least, 3, 1) / length(&pose, 3, 1);
         assert!((ratio - 1.0 / MAX_STRETCH).abs() < 1e-5, "{ratio}");
         let mut joints = [Vec3::ZERO; JOINTS];
-        joints[1 + 4 * 2 + 3] = Vec3::new(0.0, 0.013, 0.0);
+        joints[joint(2, 3)] = Vec3::new(0.0, 0.013, 0.0);
         let white = Residual { joints, ..Residual::ZERO }.scaled(3.7).apply(&pose);
         let tip = pose.fingers[2][2].b + pose.palm.rotation * Vec3::new(0.0, 0.0481, 0.0);
         assert!(white.fingers[2][2].b.distance(tip) < 1e-6);
